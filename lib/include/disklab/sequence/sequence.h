@@ -1,0 +1,50 @@
+#pragma once
+// The common interface of the 2D sample sequences (Christensen 2018, Sec. 2).
+//
+// Contract, for every generator:
+//  - an instance is built from a 64-bit seed (its randomization); same seed -> same points;
+//  - at(index) is deterministic, progressive (every prefix is a good set) and lies in [0,1)^2,
+//    never 1.0;
+//  - at() is const and thread-safe: any one-time set-up happens in the constructor.
+// Concrete generators are usable directly (no virtual call) in hot loops; the type-erased
+// Sequence below is what the CLI and the experiments use to pick a generator by name.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "disklab/types.h"
+
+namespace disklab::sequence {
+
+class Sequence {
+ public:
+  virtual ~Sequence() = default;
+  virtual Point2 at(uint32_t index) const = 0;
+  // The CLI name of the generator, e.g. "sobol-owen".
+  virtual std::string_view name() const = 0;
+};
+
+// Wraps a concrete generator (anything with `Point2 at(uint32_t) const`).
+template <class Gen>
+class SequenceAdapter final : public Sequence {
+ public:
+  SequenceAdapter(std::string name, Gen gen) : name_(std::move(name)), gen_(std::move(gen)) {}
+  Point2 at(uint32_t index) const override { return gen_.at(index); }
+  std::string_view name() const override { return name_; }
+  const Gen& generator() const { return gen_; }
+
+ private:
+  std::string name_;
+  Gen gen_;
+};
+
+// Names accepted by make_sequence, in the memo's order.
+std::vector<std::string> sequence_names();
+
+// Builds the generator called `name` randomized by `seed`.
+// Throws std::invalid_argument (listing the valid names) for an unknown name.
+std::unique_ptr<Sequence> make_sequence(std::string_view name, uint64_t seed);
+
+}  // namespace disklab::sequence

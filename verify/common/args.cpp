@@ -1,0 +1,88 @@
+#include "common/args.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+#include "command.h"
+
+namespace disklab::cli {
+namespace {
+std::string trim(std::string_view s) {
+  const auto b = s.find_first_not_of(" \t");
+  if (b == std::string_view::npos) return {};
+  const auto e = s.find_last_not_of(" \t");
+  return std::string(s.substr(b, e - b + 1));
+}
+}  // namespace
+
+double parse_double(std::string_view text, std::string_view what) {
+  const std::string t = trim(text);
+  if (t.empty()) throw UsageError(std::string(what) + ": missing value");
+  char* end = nullptr;
+  const double v = std::strtod(t.c_str(), &end);
+  if (end != t.c_str() + t.size())
+    throw UsageError(std::string(what) + ": '" + t + "' is not a number");
+  if (!std::isfinite(v))
+    throw UsageError(std::string(what) + ": '" + t + "' is not a finite number");
+  return v;
+}
+
+std::vector<double> parse_list(std::string_view text, std::size_t count, std::string_view what) {
+  std::vector<double> values;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    values.push_back(parse_double(text.substr(start, comma - start), what));
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  if (values.size() != count) {
+    std::ostringstream msg;
+    msg << what << ": expected " << count << " comma-separated numbers, got '" << text << "'";
+    throw UsageError(msg.str());
+  }
+  return values;
+}
+
+Point2 parse_point2(std::string_view text, std::string_view what) {
+  const auto v = parse_list(text, 2, what);
+  return {v[0], v[1]};
+}
+
+Vec3 parse_vec3(std::string_view text, std::string_view what) {
+  const auto v = parse_list(text, 3, what);
+  return {v[0], v[1], v[2]};
+}
+
+void require_range(double value, double lo, double hi, std::string_view what) {
+  if (!(value >= lo && value <= hi)) {
+    std::ostringstream msg;
+    msg.precision(17);
+    msg << what << ": " << value << " is outside [" << lo << ", " << hi << "]";
+    throw UsageError(msg.str());
+  }
+}
+
+void require_positive(double value, std::string_view what) {
+  if (!(value > 0.0)) {
+    std::ostringstream msg;
+    msg.precision(17);
+    msg << what << ": " << value << " must be positive";
+    throw UsageError(msg.str());
+  }
+}
+
+void require_one_of(std::string_view name, const std::vector<std::string>& valid,
+                    std::string_view what) {
+  for (const auto& v : valid)
+    if (v == name) return;
+  std::ostringstream msg;
+  msg << what << ": unknown name '" << name << "' (valid:";
+  for (const auto& v : valid) msg << ' ' << v;
+  msg << ')';
+  throw UsageError(msg.str());
+}
+
+}  // namespace disklab::cli

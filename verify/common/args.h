@@ -1,0 +1,32 @@
+#pragma once
+// Parsing and validation of user input. Every failure throws UsageError with a message that
+// names the option and the offending text.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "disklab/types.h"
+
+namespace disklab::cli {
+
+// A finite double; `what` names the option in the error ("--radius").
+double parse_double(std::string_view text, std::string_view what);
+
+// Exactly `count` comma-separated finite doubles ("0.5,0.25").
+std::vector<double> parse_list(std::string_view text, std::size_t count, std::string_view what);
+
+Point2 parse_point2(std::string_view text, std::string_view what);
+Vec3 parse_vec3(std::string_view text, std::string_view what);
+
+// Throws unless lo <= value <= hi.
+void require_range(double value, double lo, double hi, std::string_view what);
+// Throws unless value > 0.
+void require_positive(double value, std::string_view what);
+
+// Throws unless `name` is one of `valid` (message lists them).
+void require_one_of(std::string_view name, const std::vector<std::string>& valid,
+                    std::string_view what);
+
+}  // namespace disklab::cli

@@ -1,0 +1,62 @@
+#pragma once
+// Output helpers: round-trip number formatting, atomic files, progress on stderr, plots.
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace disklab::cli {
+
+// %.17g: enough digits to read the same double back.
+std::string fmt17(double value);
+
+// Writes to a temporary file next to `target` and renames it into place on commit(); if the
+// object dies uncommitted (an error), the temporary is removed and `target` is untouched.
+class AtomicFile {
+ public:
+  explicit AtomicFile(std::filesystem::path target);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  std::ofstream& stream() { return out_; }
+  // Path of the temporary, for a producer that writes the file itself (e.g. a plot script).
+  const std::filesystem::path& temp_path() const { return temp_; }
+  void commit();
+
+ private:
+  std::filesystem::path target_, temp_;
+  std::ofstream out_;
+  bool committed_ = false;
+};
+
+// Writes `content` to `target` atomically.
+void write_file_atomic(const std::filesystem::path& target, const std::string& content);
+
+// Progress of a long run on stderr: a rewritten line on a terminal, a line per ~10% otherwise.
+// Thread-safe tick(); silent when DISKLAB_QUIET is set.
+class Progress {
+ public:
+  Progress(std::string label, uint64_t total);
+  ~Progress();
+  void tick(uint64_t done_now = 1);
+  void finish();
+
+ private:
+  void print(uint64_t done);
+  std::string label_;
+  uint64_t total_;
+  uint64_t done_ = 0;
+  int last_decile_ = -1;
+  bool tty_, quiet_, finished_ = false;
+};
+
+// Runs the embedded matplotlib script `script` (verify/plots/<script>.py) with the arguments,
+// producing the PNG `png` atomically. The interpreter is $DISKLAB_PYTHON, else /usr/bin/python3
+// (Debian's, where python3-matplotlib lives), else python3 on PATH.
+// Throws std::runtime_error with the script's stderr if it fails.
+void run_plot(const std::string& script, const std::vector<std::string>& args,
+              const std::filesystem::path& png);
+
+}  // namespace disklab::cli

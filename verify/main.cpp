@@ -1,0 +1,58 @@
+// `disklab`: accuracy reports, the papers' experiments and single evaluations.
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+
+#include "command.h"
+
+namespace disklab::cli {
+std::vector<Command>& registry() {
+  static std::vector<Command> commands;
+  return commands;
+}
+}  // namespace disklab::cli
+
+int main(int argc, char** argv) {
+  using namespace disklab::cli;
+  CLI::App app{
+      "disklab: sample disk-shaped area lights, and prove the samplers.\n"
+      "Square sequences, square-to-disk strategies (Christensen 2018) and solid-angle maps of\n"
+      "the spherical ellipse (Guillen et al. 2017), with their accuracy and convergence studies.",
+      "disklab"};
+  app.require_subcommand(1);
+  app.footer(
+      "Run `disklab <command> --help` for a command's options and examples.\n"
+      "Exit codes: 0 success, 1 internal failure, 2 invalid input.");
+
+  auto& commands = registry();
+  std::sort(commands.begin(), commands.end(),
+            [](const Command& a, const Command& b) { return a.name < b.name; });
+  std::function<int()> action;
+  for (Command& command : commands) {
+    CLI::App* sub = app.add_subcommand(command.name, command.summary);
+    auto run = command.setup(*sub);
+    sub->callback([&action, run] { action = run; });
+  }
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::string what = e.what();
+    std::replace(what.begin(), what.end(), '\n', ' ');
+    std::fprintf(stderr, "disklab: error: %s (see --help)\n", what.c_str());
+    return 2;
+  }
+  try {
+    return action ? action() : 2;
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "disklab: error: %s\n", e.what());
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "disklab: internal error: %s\n", e.what());
+    return 1;
+  }
+}
