@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <string>
 
 #include "command.h"
 
@@ -34,6 +35,20 @@ int main(int argc, char** argv) {
     sub->callback([&action, run] { action = run; });
   }
 
+  // CLI11 reports an unknown first word as "a subcommand is required"; name it instead.
+  if (argc > 1 && argv[1][0] != '-') {
+    const std::string first = argv[1];
+    const bool known = std::any_of(commands.begin(), commands.end(),
+                                   [&](const Command& c) { return c.name == first; });
+    if (!known) {
+      std::string names;
+      for (const Command& c : commands)
+        names += " " + c.name;
+      std::fprintf(stderr, "disklab: error: unknown command '%s' (valid:%s)\n", first.c_str(),
+                   names.c_str());
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -41,21 +41,21 @@ int run_report(const ReportState& state) {
   return worst;
 }
 
-const Registrar kReport{Command{
-    "report",
-    "Run every study and accuracy table into one folder",
-    [](CLI::App& sub) {
-      auto state = std::make_shared<ReportState>();
-      sub.add_option("--out", state->out, "Output folder (created if missing)")
-          ->capture_default_str();
-      sub.add_flag("--quick", state->quick, "Smaller runs, for smoke tests and CI");
-      sub.footer(
-          "Examples:\n"
-          "  disklab report --out report\n"
-          "  disklab report --quick --out /tmp/r");
-      return [state] { return run_report(*state); };
-    },
-    {}}};
+const Registrar kReport{
+    Command{"report",
+            "Run every study and accuracy table into one folder",
+            [](CLI::App& sub) {
+              auto state = std::make_shared<ReportState>();
+              sub.add_option("--out", state->out, "Output folder (created if missing)")
+                  ->capture_default_str();
+              sub.add_flag("--quick", state->quick, "Smaller runs, for smoke tests and CI");
+              sub.footer(
+                  "Examples:\n"
+                  "  disklab report --out report\n"
+                  "  disklab report --quick --out /tmp/r");
+              return [state] { return run_report(*state); };
+            },
+            {}}};
 
 }  // namespace
 }  // namespace disklab::cli

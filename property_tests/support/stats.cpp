@@ -61,10 +61,12 @@ MeanEstimate mean_estimate(const std::vector<double>& values) {
   if (m.n < 2) throw std::invalid_argument("mean_estimate: need at least two values");
   // Two-pass for accuracy.
   double sum = 0.0;
-  for (double v : values) sum += v;
+  for (double v : values)
+    sum += v;
   m.mean = sum / static_cast<double>(m.n);
   double ss = 0.0;
-  for (double v : values) ss += (v - m.mean) * (v - m.mean);
+  for (double v : values)
+    ss += (v - m.mean) * (v - m.mean);
   m.std_error = std::sqrt(ss / static_cast<double>(m.n - 1) / static_cast<double>(m.n));
   return m;
 }

@@ -12,9 +12,9 @@ double sidak_alpha(double family_alpha, std::size_t tests);
 
 struct ChiSquareResult {
   double statistic = 0.0;
-  std::size_t dof = 0;       // degrees of freedom after pooling
-  double p_value = 1.0;      // P(X >= statistic) under the null hypothesis
-  std::size_t pooled = 0;    // bins merged because their expected count was small
+  std::size_t dof = 0;     // degrees of freedom after pooling
+  double p_value = 1.0;    // P(X >= statistic) under the null hypothesis
+  std::size_t pooled = 0;  // bins merged because their expected count was small
   std::string summary() const;
 };
 

@@ -80,7 +80,8 @@ void require_one_of(std::string_view name, const std::vector<std::string>& valid
     if (v == name) return;
   std::ostringstream msg;
   msg << what << ": unknown name '" << name << "' (valid:";
-  for (const auto& v : valid) msg << ' ' << v;
+  for (const auto& v : valid)
+    msg << ' ' << v;
   msg << ')';
   throw UsageError(msg.str());
 }

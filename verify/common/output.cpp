@@ -1,7 +1,7 @@
 #include "common/output.h"
 
-#include <unistd.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <cstdio>
@@ -67,7 +67,9 @@ Progress::Progress(std::string label, uint64_t total)
       tty_(::isatty(STDERR_FILENO) != 0),
       quiet_(std::getenv("DISKLAB_QUIET") != nullptr) {}
 
-Progress::~Progress() { finish(); }
+Progress::~Progress() {
+  finish();
+}
 
 void Progress::tick(uint64_t done_now) {
   static std::mutex mutex;
@@ -109,12 +111,14 @@ std::string python_interpreter() {
 
 std::string shell_quote(const std::string& s) {
   std::string q = "'";
-  for (char c : s) q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+  for (char c : s)
+    q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
   return q + "'";
 }
 }  // namespace
 
-void run_plot(const std::string& script, const std::vector<std::string>& args, const fs::path& png) {
+void run_plot(const std::string& script, const std::vector<std::string>& args,
+              const fs::path& png) {
   const std::string_view text = find_script(script);
   AtomicFile script_file(fs::temp_directory_path() / ("disklab-" + script + ".py"));
   script_file.stream() << text;
@@ -122,16 +126,18 @@ void run_plot(const std::string& script, const std::vector<std::string>& args, c
   std::ostringstream cmd;
   cmd << shell_quote(python_interpreter()) << ' ' << shell_quote(script_file.temp_path().string())
       << " --out " << shell_quote(out.temp_path().string());
-  for (const auto& a : args) cmd << ' ' << shell_quote(a);
+  for (const auto& a : args)
+    cmd << ' ' << shell_quote(a);
   script_file.stream().flush();
-  const fs::path err = fs::temp_directory_path() /
-                       ("disklab-plot-" + std::to_string(::getpid()) + ".err");
+  const fs::path err =
+      fs::temp_directory_path() / ("disklab-plot-" + std::to_string(::getpid()) + ".err");
   cmd << " 2>" << shell_quote(err.string());
   const int status = std::system(cmd.str().c_str());
   std::string message;
   if (std::FILE* f = std::fopen(err.c_str(), "r")) {
     char buf[512];
-    while (std::fgets(buf, sizeof buf, f)) message += buf;
+    while (std::fgets(buf, sizeof buf, f))
+      message += buf;
     std::fclose(f);
   }
   std::error_code ec;
