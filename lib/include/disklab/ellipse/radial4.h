@@ -1,0 +1,53 @@
+#pragma once
+// radial4 (beyond both seed papers): Christensen's polar4 idea applied to the radial map. The
+// spherical ellipse is mirror-symmetric about the x_e and y_e planes (not rotation-symmetric), so
+// each square sample is mapped into the first quadrant (eps1 = the quadrant's cumulative
+// fraction, eps2 as in radial.h) and reused in all four quadrants through the reflections
+// (x, y) -> (+-x, +-y). Each of the four directions has pdf 1/Omega; one root solve serves four
+// samples.
+#include <array>
+
+#include "disklab/ellipse/radial.h"
+
+namespace disklab::ellipse {
+
+struct Radial4Map {
+  RadialMap radial;
+
+  static Radial4Map make(const Vec3& center, const Vec3& normal, double radius, const Vec3& o) {
+    return Radial4Map{RadialMap::make(center, normal, radius, o)};
+  }
+  bool valid() const { return radial.valid(); }
+  double pdf() const { return radial.pdf; }
+
+  // The first-quadrant point of u (the map [0,1]^2 -> quadrant 0, measure Omega/4).
+  EllipseSample sample_quadrant(Point2 u, int* iterations = nullptr) const {
+    if (!radial.valid()) return {};
+    const RadialQuadrant q = radial.quadrant();
+    const double s = q.solve_s(std::clamp(u.x, 0.0, 1.0), iterations);
+    return finish_sample(radial.g, q.local_point(0, s, std::clamp(u.y, 0.0, 1.0)), radial.pdf);
+  }
+
+  // The four reflections of sample_quadrant(u), counter-clockwise from quadrant 0.
+  std::array<EllipseSample, 4> sample4(Point2 u, int* iterations = nullptr) const {
+    std::array<EllipseSample, 4> out{};
+    const EllipseSample s0 = sample_quadrant(u, iterations);
+    if (!s0.valid) return out;
+    const Vec3 l = s0.local;
+    const std::array<Vec3, 4> locals = {l, Vec3(-l.x(), l.y(), l.z()), Vec3(-l.x(), -l.y(), l.z()),
+                                        Vec3(l.x(), -l.y(), l.z())};
+    out[0] = s0;
+    for (int k = 1; k < 4; ++k)
+      out[k] = finish_sample(radial.g, locals[k], radial.pdf);
+    return out;
+  }
+
+  // Inverse of sample_quadrant for a direction in any quadrant (folded into the first).
+  Point2 invert_local(const Vec3& l) const {
+    int k;
+    return radial.quadrant().invert_local(Vec3(std::abs(l.x()), std::abs(l.y()), l.z()), k);
+  }
+  Point2 invert(const Vec3& direction) const { return invert_local(radial.g.to_local(direction)); }
+};
+
+}  // namespace disklab::ellipse
