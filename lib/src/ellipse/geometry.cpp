@@ -1,0 +1,171 @@
+// Set-up of the spherical ellipse (Guillén et al. 2017, Sec. 3); see geometry.h for the closed
+// forms and solid_angle.h for the solid angle.
+#include "disklab/ellipse/geometry.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "disklab/ellipse/solid_angle.h"
+#include "disklab/math/constants.h"
+
+namespace disklab::ellipse {
+namespace {
+
+// Error-free transformations (Knuth's TwoSum, fma TwoProd) for the height of o above the plane:
+// h decides what o sees and, for grazing points, sets Omega almost proportionally, so it is
+// formed to ~1 ulp from the inputs (Ogita-Rump-Oishi Dot2 over the exact differences c - o).
+inline void two_sum(double a, double b, double& s, double& err) {
+  s = a + b;
+  const double bb = s - a;
+  err = (a - (s - bb)) + (b - bb);
+}
+
+// (p - q) . n with p - q formed exactly.
+double height_dot(const Vec3& p, const Vec3& q, const Vec3& n) {
+  double sum = 0.0, comp = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    double v_hi, v_lo;
+    two_sum(p[i], -q[i], v_hi, v_lo);
+    const double p = v_hi * n[i];
+    const double p_err = std::fma(v_hi, n[i], -p);
+    double s, s_err;
+    two_sum(sum, p, s, s_err);
+    sum = s;
+    comp += s_err + p_err + v_lo * n[i];
+  }
+  return sum + comp;
+}
+
+void require_finite(const Vec3& v, const char* what) {
+  if (!v.allFinite())
+    throw std::invalid_argument(std::string("spherical ellipse: non-finite ") + what);
+}
+
+}  // namespace
+
+EllipseShape ellipse_shape(double h, double e, double r) {
+  EllipseShape s{};
+  // Cone principal axes (geometry.h): Q = h^2 + e^2 - r^2, S = sqrt(Q^2 + 4 r^2 h^2), K = Q + S.
+  const double two_rh = 2.0 * r * h;
+  const double Q = std::fma(h, h, (e - r) * (e + r));
+  const double S = std::hypot(Q, two_rh);
+  // Q < 0 (o inside the sphere through the rim): Q + S cancels; K = 4 r^2 h^2 / (S - Q) instead.
+  const double K = Q >= 0.0 ? Q + S : two_rh * (two_rh / (S - Q));
+  // S - P, P = h^2 + r^2 - e^2: for P > 0 it cancels far away; S^2 - P^2 = 4 e^2 h^2.
+  const double P = std::fma(h, h, (r - e) * (r + e));
+  const double two_eh = 2.0 * e * h;
+  const double S_minus_P = P <= 0.0 ? S - P : two_eh * (two_eh / (S + P));
+
+  s.a_t = r * std::sqrt(2.0 / K);
+  s.b_t = two_rh / K;
+  s.alpha = std::atan(s.a_t);
+  s.beta = std::atan(s.b_t);
+  const double ha = std::hypot(1.0, s.a_t), hb = std::hypot(1.0, s.b_t);
+  s.a = s.a_t / ha;  // sin(atan x) = x / sqrt(1 + x^2)
+  s.b = s.b_t / hb;
+  s.one_minus_a2 = (1.0 / ha) / ha;
+  s.one_minus_b2 = (1.0 / hb) / hb;
+  // n_r = (a^2 - b^2) / (a^2 (1 - b^2)) = (S - P) / K, 1 - n_r = 2 h^2 / K = (a_t h / r)^2,
+  // m = a^2 n_r, 1 - m = (1 + b_t^2) / (1 + a_t^2) (eqs. 10 and 20 coincide).
+  s.n_r = S_minus_P / K;
+  const double ath = s.a_t * (h / r);
+  s.one_minus_n_r = ath * ath;
+  s.m = s.a * s.a * s.n_r;
+  s.one_minus_m = (hb / ha) * (hb / ha);
+  s.c_t = s.a;
+  s.radial_coefficient = s.a * (h / r);  // eq. (19): b (1 - a^2) / (a sqrt(1 - b^2)) = a h / r
+  // Ellipse centre: eigenvector of the cone's negative eigenvalue, (0, -e, h (1 + 2 r^2/K)).
+  const double zy = -e, zz = h * (1.0 + s.a_t * s.a_t);
+  const double zn = std::hypot(zy, zz);
+  s.ze_y = zy / zn;
+  s.ze_z = zz / zn;
+  return s;
+}
+
+SphericalEllipse make_spherical_ellipse(const Disk& disk, const Vec3& o) {
+  require_finite(disk.center, "disk centre");
+  require_finite(disk.normal, "disk normal");
+  require_finite(o, "shading point");
+  if (!std::isfinite(disk.radius))
+    throw std::invalid_argument("spherical ellipse: non-finite radius");
+  if (disk.radius < 0.0) throw std::invalid_argument("spherical ellipse: negative radius");
+  const double nn = disk.normal.norm();
+  if (!(nn > 0.0) || !std::isfinite(nn))
+    throw std::invalid_argument("spherical ellipse: zero (or overflowing) normal");
+
+  SphericalEllipse se;
+  se.origin = o;
+  se.center = disk.center;
+  se.radius = disk.radius;
+  Vec3 n = disk.normal / nn;
+  se.normal = n;
+  if (disk.radius == 0.0) return se;
+
+  // Height of o above the front face (eq. 3's z_d = -n puts the disk at z_d > 0 iff h > 0).
+  double h = height_dot(o, disk.center, disk.normal) / nn;  // (o - c) . n
+  if (h == 0.0) return se;                                  // in the plane: sees the disk edge-on
+  if (h < 0.0) {
+    if (!disk.two_sided) return se;  // behind a one-sided disk
+    h = -h;
+    n = -n;
+  }
+  se.normal = n;
+  const Vec3 v = disk.center - o;
+  const Vec3 zd = -n;
+  const double e = v.cross(n).norm();
+
+  // Eq. (3) with x and y swapped (DESIGN.md Sec. 3): x_d = normalize(z_d x (c - o)).
+  se.disk_frame = math::Frame::from_zx(zd, zd.cross(v));
+  const EllipseShape s = ellipse_shape(h, e, disk.radius);
+  if (!(s.a_t > 0.0) || !std::isfinite(s.a_t) || !(s.b_t > 0.0) || !std::isfinite(s.b_t))
+    return se;  // under/overflow at absurd scales: nothing measurable
+
+  se.h = h;
+  se.e = e;
+  se.a = s.a;
+  se.b = s.b;
+  se.alpha = s.alpha;
+  se.beta = s.beta;
+  se.a_t = s.a_t;
+  se.b_t = s.b_t;
+  se.one_minus_a2 = s.one_minus_a2;
+  se.one_minus_b2 = s.one_minus_b2;
+  se.m = s.m;
+  se.one_minus_m = s.one_minus_m;
+  se.n_r = s.n_r;
+  se.one_minus_n_r = s.one_minus_n_r;
+  se.n_p = -s.b_t * s.b_t;
+  se.c_t = s.c_t;
+  se.radial_coefficient = s.radial_coefficient;
+
+  se.frame.x = se.disk_frame.x;
+  se.frame.z = (s.ze_y * se.disk_frame.y + s.ze_z * se.disk_frame.z).normalized();
+  se.frame.y = se.frame.z.cross(se.frame.x);
+
+  // Radial sector split (solid_angle.h): Gauss-Legendre where r_t^2 <= 3, eq. (19) where
+  // r_t^2 > 3. r_t^2 = a_t^2 cos^2 t + b_t^2 sin^2 t decreases from a_t^2 to b_t^2.
+  constexpr double kSplit = 3.0;
+  const double at2 = s.a_t * s.a_t, bt2 = s.b_t * s.b_t;
+  if (bt2 >= kSplit) {
+    se.radial_split = math::kHalfPi;
+  } else if (at2 <= kSplit) {
+    se.radial_split = 0.0;
+  } else {
+    se.radial_split = std::atan2(std::sqrt(at2 - kSplit), std::sqrt(kSplit - bt2));
+  }
+  se.empty = false;
+  se.quadrant = radial_sector_parametric(se, math::kHalfPi);
+  se.omega = solid_angle_stable(se);
+  if (!(se.omega > 0.0) || !std::isfinite(se.omega) || !(se.quadrant > 0.0)) {
+    se.empty = true;
+    se.omega = se.quadrant = 0.0;
+  }
+  return se;
+}
+
+double solid_angle(const Disk& disk, const Vec3& o) {
+  return make_spherical_ellipse(disk, o).omega;
+}
+
+}  // namespace disklab::ellipse
