@@ -23,7 +23,7 @@ double disk_rect_area(double x0, double x1, double y0, double y1) {
   // is a constant, +-h plus a constant, 2h, or empty, integrated exactly.
   std::vector<double> cuts{x0, x1};
   for (double c : {y0, y1}) {
-    if (std::fabs(c) < 1.0) {
+    if (std::fabs(c) <= 1.0) {  // |c| = 1 cuts at x = 0, where the circle touches y = c
       const double s = std::sqrt(1.0 - c * c);
       for (double x : {-s, s})
         if (x > x0 && x < x1) cuts.push_back(x);

@@ -56,7 +56,9 @@ AreaEstimate edge_bulge_area(const Map& map, Point2 uv0, Point2 uv1, double tol)
     double d = 0.0;
     for (std::size_t i = 1; i + 1 < pts.size(); ++i)
       d += cross(sub(pts[i], pts[0]), sub(pts[i + 1], pts[0]));
-    d *= -0.5;  // counter-clockwise boundary: bulging outwards (to the right) adds area
+    // The fan traverses the curve then returns along the chord: counter-clockwise (positive)
+    // exactly when the curve bulges to the right of the chord, i.e. outwards.
+    d *= 0.5;
     row.assign(1, d);
     double factor = 4.0;
     for (std::size_t j = 1; j <= prev_row.size(); ++j, factor *= 4.0)

@@ -66,8 +66,9 @@ inline double pdf_polar_quarter(Point2 q) {
 
 // ---- polar4: one square point, four disk points rotated by 0, 90, 180, 270 degrees ----
 
-// Copy k is the memo's sample s with s mod 4 = k. Each copy alone is uniform on the disk
-// (pdf_polar); the four together are not independent, which is the point of the strategy.
+// Copy k is the memo's sample s with s mod 4 = k: uniform on quadrant k (density 4/pi there).
+// A uniformly chosen copy is uniform on the disk (pdf_polar), so an estimate over whole groups
+// of four is unbiased; the four copies are not independent, which is the point of the strategy.
 inline std::array<Point2, 4> sample_polar4(Point2 uv) {
   return four_rotations(sample_polar_quarter(uv));
 }

@@ -8,7 +8,9 @@
 // points outside the disk; pad-zero keeps them with weight 0.
 //
 // Every DiskSample says what it cost and how to weigh it: mean(weight * f(point)) estimates the
-// disk average (1/pi) int_D f dA for every strategy (weight is 1 for the maps).
+// disk average (1/pi) int_D f dA for every strategy (weight is 1 for the maps). For polar4 and
+// concentric4 this holds over whole groups of four samples (N a multiple of 4): copy k alone
+// covers quadrant k only.
 #include <cstdint>
 #include <optional>
 #include <string>
