@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 namespace disklab::test {
 
 double triangle_solid_angle(const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -27,35 +29,43 @@ double polygon_solid_angle_local(const std::vector<Vec3>& ring) {
 
 RefinedSolidAngle refined_solid_angle(const std::function<Vec3(double)>& boundary, std::size_t k0,
                                       double rel_tol, double abs_tol, std::size_t max_points) {
-  auto polygon = [&](std::size_t k) {
-    std::vector<Vec3> ring(k);
-    for (std::size_t i = 0; i < k; ++i)
-      ring[i] = boundary(static_cast<double>(i) / k);
-    return polygon_solid_angle_local(ring);
+  // Each refinement doubles the points and reuses the previous ones (the new points are the
+  // midpoints in the parameter).
+  std::size_t k = std::max<std::size_t>(k0, 4);
+  std::vector<Vec3> ring(k);
+  for (std::size_t i = 0; i < k; ++i)
+    ring[i] = boundary(static_cast<double>(i) / k);
+  auto refine = [&]() {
+    std::vector<Vec3> finer(2 * k);
+    for (std::size_t i = 0; i < k; ++i) {
+      finer[2 * i] = ring[i];
+      finer[2 * i + 1] = boundary((i + 0.5) / k);
+    }
+    ring.swap(finer);
+    k *= 2;
   };
   RefinedSolidAngle out;
-  std::size_t k = std::max<std::size_t>(k0, 4);
-  double coarse = polygon(k);
+  double coarse = polygon_solid_angle_local(ring);
   double previous_extrapolated = coarse;
   bool have_previous = false;
   while (true) {
-    const double fine = polygon(2 * k);
+    refine();
+    const double fine = polygon_solid_angle_local(ring);
     // The chord error is c k^-2 + O(k^-4) for a smooth boundary: eliminate the k^-2 term.
     const double extrapolated = (4.0 * fine - coarse) / 3.0;
     out.value = extrapolated;
-    out.points = 2 * k;
+    out.points = k;
     if (have_previous) {
       out.error = std::abs(extrapolated - previous_extrapolated);
       if (out.error <= std::max(rel_tol * std::abs(extrapolated), abs_tol)) return out;
     }
-    if (4 * k > max_points) {
+    if (2 * k > max_points) {
       if (!have_previous) out.error = std::abs(fine - coarse);
       return out;
     }
     previous_extrapolated = extrapolated;
     have_previous = true;
     coarse = fine;
-    k *= 2;
   }
 }
 
