@@ -4,9 +4,9 @@
 // eps1 picks the slice angle phi_p in [-beta, beta] by its cumulative solid angle, eqs. (6)-(8)
 // and (13); eps2 interpolates the slice's altitude between -h_p and h_p, eq. (14); the point is
 // eq. (15) in the frame R_e (the cylinder's axis is x_e). The root of eq. (13) is found by
-// safeguarded Newton with the exact derivative dOmega_p/dphi_p = 2 h_p(phi_p), eq. (6); h_p
-// vanishes at the rim, where the bracket takes over. Each half is solved from its own end
-// (eq. 7), so eps1 near 0 does not subtract two nearly equal halves.
+// safeguarded Newton with the exact derivative (eq. 6: dOmega_p/dphi_p = 2 h_p), in the angle
+// varphi_p of eq. (12) where the cumulative area stays smooth at the rim. Each half is solved from
+// its own end (eq. 7), so eps1 near 0 does not subtract two nearly equal halves.
 #include <algorithm>
 #include <cmath>
 
@@ -22,33 +22,47 @@ inline constexpr double kParallelNewtonTol = 1e-15;
 
 struct ParallelMap {
   MapGeometry g;
-  double half = 0.0;  // Omega_p^+(beta) = Omega / 2
+  double half = 0.0;  // Omega_p^+(beta), by the same function as Omega_p^+(phi_p)
   double pdf = 0.0;
 
   static ParallelMap make(const Vec3& center, const Vec3& normal, double radius, const Vec3& o) {
     ParallelMap m;
     m.g = MapGeometry::make(center, normal, radius, o);
     if (m.g.empty) return m;
-    m.half = 0.5 * m.g.omega;
+    m.half = parallel_half_sector_parametric(m.g.se, math::kHalfPi);
+    if (!(m.half > 0.0)) {
+      m.g.empty = true;
+      return m;
+    }
     m.pdf = 1.0 / m.g.omega;
     return m;
   }
   bool valid() const { return !g.empty; }
 
-  // phi_p in [0, beta] with Omega_p^+(phi_p) = f * half, f in [0, 1].
-  double solve_half(double f, int* iterations) const {
+  // The angle varphi_p of eq. (12) with Omega_p^+ = f * half, f in [0, 1]. Newton runs in
+  // varphi_p, where Omega_p^+ is smooth up to the rim: dOmega_p^+/dvarphi = 2 h_p dphi_p/dvarphi
+  // = 2 c_t b_t cos^2 v / (Delta (1 + b_t^2 sin^2 v)), Delta^2 = cos^2 v + (1 - m) sin^2 v
+  // (eq. 6 with phi_p = atan(b_t sin v)).
+  double solve_varphi(double f, int* iterations) const {
     if (iterations) *iterations = 0;
     if (!(f > 0.0)) return 0.0;
-    if (!(f < 1.0)) return g.beta;
+    if (!(f < 1.0)) return math::kHalfPi;
+    const SphericalEllipse& se = g.se;
     const double target = f * half;
-    auto eval = [this, target](double phi) {
-      return std::pair<double, double>(g.parallel_half(phi) - target, 2.0 * g.hp(phi));
+    const double k = 2.0 * se.c_t * se.b_t, bt2 = se.b_t * se.b_t;
+    auto eval = [&se, target, k, bt2](double v) {
+      const double sv = std::sin(v), cv = std::cos(v);
+      const double delta = std::sqrt(cv * cv + se.one_minus_m * sv * sv);
+      const double deriv = k * cv * cv / (delta * (1.0 + bt2 * sv * sv));
+      return std::pair<double, double>(parallel_half_sector_parametric(se, v) - target, deriv);
     };
-    // Start from the slice fraction of a planar ellipse, f = (2/pi)(t sqrt(1-t^2) + asin t)
-    // with t = sin(varphi): one Newton step on that cubic-like curve is enough for a seed.
-    const double start = f * g.beta;
-    const math::RootResult r =
-        math::safeguarded_newton(eval, 0.0, g.beta, start, kParallelNewtonTol * g.omega, 1e-17, 64);
+    // Far-field start: the slice fraction of a planar ellipse, (v + sin v cos v) / (pi/2),
+    // inverted by two fixed-point steps from v = f pi/2 (cheap, no elliptic integrals).
+    double v0 = f * math::kHalfPi;
+    for (int i = 0; i < 2; ++i)
+      v0 = std::clamp(f * math::kHalfPi - 0.5 * std::sin(2.0 * v0), 0.0, math::kHalfPi);
+    const math::RootResult r = math::safeguarded_newton(eval, 0.0, math::kHalfPi, v0,
+                                                        kParallelNewtonTol * g.omega, 1e-17, 64);
     if (iterations) *iterations = r.iterations;
     return r.x;
   }
@@ -59,21 +73,23 @@ struct ParallelMap {
     // Eq. (7): eps1 >= 1/2 lies in the positive half, the rest mirrored.
     const bool positive = e1 >= 0.5;
     const double f = positive ? 2.0 * e1 - 1.0 : 1.0 - 2.0 * e1;
-    const double phi = solve_half(f, iterations);
+    const double v = solve_varphi(f, iterations);
+    const double phi = parallel_azimuth(g.se, v);
     const double phi_p = positive ? phi : -phi;
-    const double h = (2.0 * e2 - 1.0) * g.hp(phi);  // eq. (14)
+    const double h = (2.0 * e2 - 1.0) * h_p_parametric(g.se, v);  // eq. (14)
     const double rho = std::sqrt(std::max(0.0, (1.0 - h) * (1.0 + h)));
     const Vec3 local(h, rho * std::sin(phi_p), rho * std::cos(phi_p));  // eq. (15)
     return finish_sample(g, local, pdf);
   }
 
+  // Direction -> (eps1, eps2), no root finding.
   Point2 invert_local(const Vec3& l) const {
     if (g.empty) return {};
     const double phi_p = std::atan2(l.y(), l.z());
-    const double phi = std::min(std::abs(phi_p), g.beta);
-    const double f = std::clamp(g.parallel_half(phi) / half, 0.0, 1.0);
+    const double v = parallel_parametric_angle(g.se, std::min(std::abs(phi_p), g.beta));
+    const double f = std::clamp(parallel_half_sector_parametric(g.se, v) / half, 0.0, 1.0);
     const double e1 = std::signbit(phi_p) ? 0.5 - 0.5 * f : 0.5 + 0.5 * f;
-    const double hp = g.hp(phi);
+    const double hp = h_p_parametric(g.se, v);
     const double e2 = hp > 0.0 ? std::clamp(0.5 * (l.x() / hp + 1.0), 0.0, 1.0) : 0.5;
     return {e1, e2};
   }
