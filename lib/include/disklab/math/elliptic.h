@@ -34,6 +34,13 @@
 //      Pi(n) = F/(1 - n) + (-n (1-m) / (3 (1-n)^2)) s^3 R_J(c^2, Delta^2, 1, 1 - N s^2)
 //              + sqrt(-n/((1-n)(m-n))) atan(sqrt(-n (m-n)/(1-n)) s c / Delta),
 //    three non-negative terms: no cancellation at any n < 0.
+//
+// PRECISION: for Real = double the duplication loops and series run in long double (x87, 64-bit
+// significand) while sin, cos, atan, log stay in double: the loops are where the rounding of
+// 4-6 steps accumulates (about 4 ulp at worst in pure double), and carrying them with 11
+// extra bits brings F and Pi to within 2 ulp of the correctly rounded value (measured against
+// the 50-digit tables). Where long double is no wider than double the loops run in double.
+// Any other Real (e.g. cpp_bin_float_50) computes everything in Real.
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -43,13 +50,20 @@ namespace disklab::math {
 
 namespace detail {
 
+// Working type of the Carlson loops for an interface type Real (see PRECISION above).
+template <class Real>
+using work_t = std::conditional_t<std::is_same_v<Real, double> &&
+                                      (std::numeric_limits<long double>::digits > 53),
+                                  long double, Real>;
+
 // Duplication stops when every |X_j| (the arguments' relative spread) is below this, so the
-// neglected degree-8 tail, a few times |X|^8 / 10, is below half an ulp. eps^(1/8)/2 is that
-// bound with a factor-2 margin for the tail's constant.
+// neglected degree-8 tail, at most about |X|^8 / 10, is negligible against Real's epsilon:
+// for double, 0.005^8 / 10 = 4e-20 (2^-64), below even the long double working precision; in
+// general eps^(1/8) / 2.
 template <class Real>
 inline Real duplication_tolerance() {
-  if constexpr (std::is_same_v<Real, double>) {
-    return 0.0055;  // (2^-52)^(1/8) / 2 = 0.01105 / 2
+  if constexpr (std::is_same_v<Real, double> || std::is_same_v<Real, long double>) {
+    return Real(0.005);
   } else {
     using std::pow;
     static const Real tol = pow(std::numeric_limits<Real>::epsilon(), Real(1) / 8) / 2;
@@ -62,43 +76,139 @@ inline Real quiet_nan() {
   return std::numeric_limits<Real>::quiet_NaN();
 }
 
-// R_C(1, 1 + t) for t > -1: atan(sqrt t)/sqrt t, atanh(sqrt -t)/sqrt -t, or the series
-// sum_k (-t)^k / (2k + 1) when |t| is small (DLMF 19.2.19-20 with x = 1, y = 1 + t).
-template <class Real>
-inline Real rc_one_one_plus(Real t) {
+// R_C(1, 1 + t) for t > -1, given t and 1 + t both to full relative precision (the caller
+// forms 1 + t without cancellation): atan(sqrt t)/sqrt t for t > 0, atanh(sqrt -t)/sqrt -t for
+// t < 0, or the series sum_k (-t)^k / (2k + 1) when |t| is small (DLMF 19.2.19-20, x = 1).
+// Near t = -1, atanh(r) = log((1 + r)/sqrt(1 + t)): 1 - r would cancel, 1 + t does not.
+// The series runs in W; the closed forms in Real (double's atan/log, accurate to ~1 ulp).
+template <class Real, class W>
+inline W rc_one_one_plus(W t, W one_plus_t) {
   using std::abs;
   using std::atan;
   using std::atanh;
+  using std::log;
   using std::sqrt;
-  // Nine terms: the first neglected, t^9/19, is below eps/2 for |t| <= 0.01 in double;
-  // higher precisions use the closed forms unless t is tiny.
-  const Real small = std::is_same_v<Real, double> ? Real(0.01) : Real(1e-6);
+  // Ten terms: the first neglected, t^10/21, is below 2^-64 for |t| <= 0.01; higher
+  // precisions use the closed forms unless t is tiny.
+  const W small = std::is_same_v<Real, double> ? W(0.01) : W(1e-6);
   if (abs(t) < small) {
-    Real sum = Real(1) / 19;
+    W sum = W(1) / 19;
     for (int k = 8; k >= 0; --k)
-      sum = Real(1) / (2 * k + 1) - t * sum;
+      sum = W(1) / (2 * k + 1) - t * sum;
     return sum;
   }
-  if (t > 0) {
-    const Real r = sqrt(t);
-    return atan(r) / r;
+  const Real tr = static_cast<Real>(t);
+  if (tr > 0) {
+    const Real r = sqrt(tr);
+    return W(atan(r) / r);
   }
-  const Real r = sqrt(-t);
-  return atanh(r) / r;
+  const Real r = sqrt(-tr);
+  if (r < Real(0.5)) return W(atanh(r) / r);
+  return W(log((1 + r) / sqrt(static_cast<Real>(one_plus_t))) / r);
+}
+
+// Degree-7 tail of R_F (DLMF 19.36.1) at the duplicated arguments: returns R_F.
+template <class W>
+inline W rf_series(W A, W x, W y) {
+  using std::sqrt;
+  // A_k - x_k = 4^-k (A0 - x0): DLMF's X_k, formed from the final values.
+  const W X = (A - x) / A, Y = (A - y) / A, Z = -(X + Y);
+  const W E2 = X * Y - Z * Z;
+  const W E3 = X * Y * Z;
+  return (1 - E2 / 10 + E3 / 14 + E2 * E2 / 24 - 3 * E2 * E3 / 44 - 5 * E2 * E2 * E2 / 208 +
+          3 * E3 * E3 / 104 + E2 * E2 * E3 / 16) /
+         sqrt(A);
+}
+
+// R_F by duplication (DLMF 19.36.1), arguments valid (>= 0, at most one zero).
+template <class Real, class W>
+inline W rf_loop(W x, W y, W z) {
+  using std::abs;
+  using std::max;
+  using std::sqrt;
+  W A = (x + y + z) / 3;
+  // q = max|A0 - x_j| / tol, divided by 4 per step: stop when q <= A (then |X_j| <= tol).
+  W q = max(abs(A - x), max(abs(A - y), abs(A - z))) / duplication_tolerance<W>();
+  while (q > A) {
+    const W sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
+    const W lambda = sx * (sy + sz) + sy * sz;
+    x = (x + lambda) / 4;
+    y = (y + lambda) / 4;
+    z = (z + lambda) / 4;
+    A = (A + lambda) / 4;
+    q /= 4;
+  }
+  return rf_series(A, x, y);
+}
+
+// R_F(x, y, z) and R_J(x, y, z, p) with the same x, y, z in one duplication loop (4 square
+// roots per step instead of 3 + 4). DLMF 19.36.1 (R_F) and 19.36.2 (R_J, d_k / e_k form).
+// Requires x, y, z >= 0 with at most one zero, and p > 0.
+template <class Real, class W>
+inline void rf_rj_loop(W x, W y, W z, W p, W& rf, W& rj) {
+  using std::abs;
+  using std::max;
+  using std::sqrt;
+  W AF = (x + y + z) / 3;
+  W AJ = (x + y + z + 2 * p) / 5;
+  const W delta = (p - x) * (p - y) * (p - z);
+  const W tol = duplication_tolerance<W>();
+  W qF = max(abs(AF - x), max(abs(AF - y), abs(AF - z))) / tol;
+  W qJ = max(max(abs(AJ - x), abs(AJ - y)), max(abs(AJ - z), abs(AJ - p))) / tol;
+  W scale = 1;   // 4^-k
+  W scale3 = 1;  // 4^-3k
+  W sum = 0;     // sum_k 4^-k R_C(1, 1 + e_k) / d_k
+  while (qF > AF || qJ > AJ) {
+    const W sx = sqrt(x), sy = sqrt(y), sz = sqrt(z), sp = sqrt(p);
+    const W lambda = sx * (sy + sz) + sy * sz;
+    const W d = (sp + sx) * (sp + sy) * (sp + sz);
+    const W inv_d = 1 / d;
+    // e_k = 4^-3k delta / d_k^2 (DLMF 19.36.2). With d'_k = prod (sqrt p - sqrt x_j), e_k = d'/d
+    // and d + d' = 2 sqrt(p) (p + lambda), so 1 + e_k = 2 sqrt(p) (p + lambda) / d_k exactly:
+    // a sum of positive terms, accurate even where e_k -> -1 (p much smaller than x, y or z).
+    const W e = scale3 * delta * inv_d * inv_d;
+    const W one_plus_e = 2 * sp * (p + lambda) * inv_d;
+    sum += scale * rc_one_one_plus<Real>(e, one_plus_e) * inv_d;
+    x = (x + lambda) / 4;
+    y = (y + lambda) / 4;
+    z = (z + lambda) / 4;
+    p = (p + lambda) / 4;
+    AF = (AF + lambda) / 4;
+    AJ = (AJ + lambda) / 4;
+    qF /= 4;
+    qJ /= 4;
+    scale /= 4;
+    scale3 /= 64;
+  }
+  rf = rf_series(AF, x, y);
+  const W X = (AJ - x) / AJ, Y = (AJ - y) / AJ, Z = (AJ - z) / AJ;
+  const W P = -(X + Y + Z) / 2;
+  const W XYZ = X * Y * Z;
+  const W P2 = P * P;
+  const W E2 = X * Y + X * Z + Y * Z - 3 * P2;
+  const W E3 = XYZ + 2 * E2 * P + 4 * P * P2;
+  const W E4 = (2 * XYZ + E2 * P + 3 * P * P2) * P;
+  const W E5 = XYZ * P2;
+  // DLMF 19.36.2 through degree 5, plus Carlson's degree-6 and -7 terms (the 50-digit test
+  // against the tables would see a wrong coefficient: their size there is tol^6 ~ 1e-38).
+  const W series = 1 - 3 * E2 / 14 + E3 / 6 + 9 * E2 * E2 / 88 - 3 * E4 / 22 - 9 * E2 * E3 / 52 +
+                   3 * E5 / 26 - E2 * E2 * E2 / 16 + 3 * E3 * E3 / 40 + 3 * E2 * E4 / 20 +
+                   45 * E2 * E2 * E3 / 272 - 9 * (E3 * E4 + E2 * E5) / 68;
+  rj = scale * series / (AJ * sqrt(AJ)) + 6 * sum;
 }
 
 }  // namespace detail
 
 // ---------------------------------------------------------------------------------------------
 // Carlson's symmetric integrals (DLMF 19.16.1-2, 19.2.17). Arguments must be >= 0 (p > 0) with at
-// most one of x, y, z zero; otherwise the result is NaN (negative input) or +inf (two zeros).
+// most one of x, y, z zero; otherwise the result is NaN (negative or NaN input) or +inf (two
+// zeros).
 
 // R_C(x, y) = (1/2) int_0^inf dt / (sqrt(t + x) (t + y)), x >= 0, y > 0 (DLMF 19.2.17).
 template <class Real>
 inline Real carlson_rc(Real x, Real y) {
   using std::atan;
   using std::atanh;
-  using std::log;
   using std::sqrt;
   if (!(x >= 0) || !(y > 0)) return detail::quiet_nan<Real>();
   if (x == y) return 1 / sqrt(x);
@@ -113,106 +223,21 @@ inline Real carlson_rc(Real x, Real y) {
 // R_F(x, y, z) = (1/2) int_0^inf dt / sqrt((t+x)(t+y)(t+z)), DLMF 19.36.1.
 template <class Real>
 inline Real carlson_rf(Real x, Real y, Real z) {
-  using std::abs;
-  using std::max;
-  using std::sqrt;
+  using W = detail::work_t<Real>;
   if (!(x >= 0 && y >= 0 && z >= 0)) return detail::quiet_nan<Real>();
   if ((x == 0) + (y == 0) + (z == 0) >= 2) return std::numeric_limits<Real>::infinity();
-  const Real A0 = (x + y + z) / 3;
-  Real A = A0;
-  // q = max|A0 - x_j| / tol, divided by 4 per step: stop when q <= A (then |X_j| <= tol).
-  Real q = max(abs(A0 - x), max(abs(A0 - y), abs(A0 - z))) / detail::duplication_tolerance<Real>();
-  while (q > A) {
-    const Real sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
-    const Real lambda = sx * (sy + sz) + sy * sz;
-    x = (x + lambda) / 4;
-    y = (y + lambda) / 4;
-    z = (z + lambda) / 4;
-    A = (A + lambda) / 4;
-    q /= 4;
-  }
-  // A_k - x_k = 4^-k (A0 - x0) (DLMF 19.36.1's X scaling), formed from the final values.
-  const Real Xk = (A - x) / A, Yk = (A - y) / A, Zk = -(Xk + Yk);
-  const Real E2 = Xk * Yk - Zk * Zk;
-  const Real E3 = Xk * Yk * Zk;
-  // DLMF 19.36.1 through degree 7.
-  const Real series = 1 - E2 / 10 + E3 / 14 + E2 * E2 / 24 - 3 * E2 * E3 / 44 -
-                      5 * E2 * E2 * E2 / 208 + 3 * E3 * E3 / 104 + E2 * E2 * E3 / 16;
-  return series / sqrt(A);
+  return static_cast<Real>(detail::rf_loop<Real>(W(x), W(y), W(z)));
 }
-
-namespace detail {
-
-// Shared duplication of R_F(x, y, z) and R_J(x, y, z, p) (same x, y, z): one loop, 4 square
-// roots per step instead of 6 + 3. DLMF 19.36.1 (R_F) and 19.36.2 (R_J, d_k / e_k form).
-// Requires x, y, z >= 0 with at most one zero, and p > 0.
-template <class Real>
-inline void carlson_rf_rj(Real x, Real y, Real z, Real p, Real& rf, Real& rj) {
-  using std::abs;
-  using std::max;
-  using std::sqrt;
-  const Real AF0 = (x + y + z) / 3;
-  const Real AJ0 = (x + y + z + 2 * p) / 5;
-  const Real delta = (p - x) * (p - y) * (p - z);
-  Real AF = AF0, AJ = AJ0;
-  const Real tol = duplication_tolerance<Real>();
-  Real qF = max(abs(AF0 - x), max(abs(AF0 - y), abs(AF0 - z))) / tol;
-  Real qJ = max(max(abs(AJ0 - x), abs(AJ0 - y)), max(abs(AJ0 - z), abs(AJ0 - p))) / tol;
-  Real scale = 1;   // 4^-k
-  Real scale3 = 1;  // 4^-3k
-  Real sum = 0;     // sum_k 4^-k R_C(1, 1 + e_k) / d_k
-  while (qF > AF || qJ > AJ) {
-    const Real sx = sqrt(x), sy = sqrt(y), sz = sqrt(z), sp = sqrt(p);
-    const Real lambda = sx * (sy + sz) + sy * sz;
-    const Real d = (sp + sx) * (sp + sy) * (sp + sz);
-    const Real e = scale3 * delta / (d * d);
-    sum += scale * rc_one_one_plus(e) / d;
-    x = (x + lambda) / 4;
-    y = (y + lambda) / 4;
-    z = (z + lambda) / 4;
-    p = (p + lambda) / 4;
-    AF = (AF + lambda) / 4;
-    AJ = (AJ + lambda) / 4;
-    qF /= 4;
-    qJ /= 4;
-    scale /= 4;
-    scale3 /= 64;
-  }
-  {
-    const Real X = (AF - x) / AF, Y = (AF - y) / AF, Z = -(X + Y);
-    const Real E2 = X * Y - Z * Z;
-    const Real E3 = X * Y * Z;
-    rf = (1 - E2 / 10 + E3 / 14 + E2 * E2 / 24 - 3 * E2 * E3 / 44 - 5 * E2 * E2 * E2 / 208 +
-          3 * E3 * E3 / 104 + E2 * E2 * E3 / 16) /
-         sqrt(AF);
-  }
-  {
-    const Real X = (AJ - x) / AJ, Y = (AJ - y) / AJ, Z = (AJ - z) / AJ;
-    const Real P = -(X + Y + Z) / 2;
-    const Real XYZ = X * Y * Z;
-    const Real P2 = P * P;
-    const Real E2 = X * Y + X * Z + Y * Z - 3 * P2;
-    const Real E3 = XYZ + 2 * E2 * P + 4 * P * P2;
-    const Real E4 = (2 * XYZ + E2 * P + 3 * P * P2) * P;
-    const Real E5 = XYZ * P2;
-    // DLMF 19.36.2 through degree 5, plus Carlson's degree-6 and -7 terms.
-    const Real series = 1 - 3 * E2 / 14 + E3 / 6 + 9 * E2 * E2 / 88 - 3 * E4 / 22 -
-                        9 * E2 * E3 / 52 + 3 * E5 / 26 - E2 * E2 * E2 / 16 + 3 * E3 * E3 / 40 +
-                        3 * E2 * E4 / 20 + 45 * E2 * E2 * E3 / 272 - 9 * (E3 * E4 + E2 * E5) / 68;
-    rj = scale * series / (AJ * sqrt(AJ)) + 6 * sum;
-  }
-}
-
-}  // namespace detail
 
 // R_J(x, y, z, p) = (3/2) int_0^inf dt / ((t + p) sqrt((t+x)(t+y)(t+z))), p > 0, DLMF 19.36.2.
 template <class Real>
 inline Real carlson_rj(Real x, Real y, Real z, Real p) {
+  using W = detail::work_t<Real>;
   if (!(x >= 0 && y >= 0 && z >= 0 && p > 0)) return detail::quiet_nan<Real>();
   if ((x == 0) + (y == 0) + (z == 0) >= 2) return std::numeric_limits<Real>::infinity();
-  Real rf, rj;
-  detail::carlson_rf_rj(x, y, z, p, rf, rj);
-  return rj;
+  W rf, rj;
+  detail::rf_rj_loop<Real>(W(x), W(y), W(z), W(p), rf, rj);
+  return static_cast<Real>(rj);
 }
 
 // R_D(x, y, z) = R_J(x, y, z, z), z > 0, DLMF 19.16.5.
@@ -226,23 +251,30 @@ inline Real carlson_rd(Real x, Real y, Real z) {
 
 namespace detail {
 
-// Shared inputs of the Legendre forms at phi in [0, pi/2]: s, c, c^2 and Delta^2 = 1 - m s^2.
-template <class Real>
+// Shared inputs of the Legendre forms at phi in [0, pi/2]: s, c (in Real, from Real's sin/cos),
+// and c^2, Delta^2 = 1 - m s^2 in the working type.
+template <class W>
 struct LegendreArgs {
-  Real s, c, c2, delta2;
+  W s, c, c2, delta2;
 };
 
-template <class Real>
-inline LegendreArgs<Real> legendre_args(Real phi, Real m, Real one_minus_m) {
+template <class Real, class W = work_t<Real>>
+inline LegendreArgs<W> legendre_args(Real phi, Real m, Real one_minus_m) {
   using std::cos;
   using std::sin;
-  LegendreArgs<Real> a;
-  a.s = sin(phi);
-  a.c = cos(phi);
+  LegendreArgs<W> a;
+  a.s = W(sin(phi));
+  a.c = W(cos(phi));
   a.c2 = a.c * a.c;
   // 1 - m s^2 cancels when m s^2 -> 1; c^2 + (1 - m) s^2 is then a sum of positive terms.
-  a.delta2 = (m <= Real(0.5)) ? 1 - m * a.s * a.s : a.c2 + one_minus_m * a.s * a.s;
+  a.delta2 = (m <= Real(0.5)) ? 1 - W(m) * a.s * a.s : a.c2 + W(one_minus_m) * a.s * a.s;
   return a;
+}
+
+// 1 - n s^2 (the R_J argument p), without cancellation as n -> 1.
+template <class Real, class W>
+inline W one_minus_n_s2(Real n, Real one_minus_n, const LegendreArgs<W>& a) {
+  return (n <= Real(0.5)) ? 1 - W(n) * a.s * a.s : a.c2 + W(one_minus_n) * a.s * a.s;
 }
 
 template <class Real>
@@ -253,58 +285,45 @@ inline bool in_phi_domain(Real phi) {
 // F at phi in [0, pi/2], m <= 1.
 template <class Real>
 inline Real ellint_f_core(Real phi, Real m, Real one_minus_m) {
-  const LegendreArgs<Real> a = legendre_args(phi, m, one_minus_m);
+  using W = work_t<Real>;
+  const LegendreArgs<W> a = legendre_args(phi, m, one_minus_m);
   if (a.s == 0) return phi;
-  return a.s * carlson_rf(a.c2, a.delta2, Real(1));
+  return static_cast<Real>(a.s * rf_loop<Real>(a.c2, a.delta2, W(1)));
 }
 
-// Pi at phi in [0, pi/2], m <= 1, n <= 1. Writes F as well (it comes for free).
+// Pi at phi in [0, pi/2], m <= 1, n <= 1.
 template <class Real>
-inline Real ellint_pi_core(Real n, Real one_minus_n, Real phi, Real m, Real one_minus_m,
-                           Real* f_out = nullptr) {
+inline Real ellint_pi_core(Real n, Real one_minus_n, Real phi, Real m, Real one_minus_m) {
+  using W = work_t<Real>;
   using std::atan;
   using std::sqrt;
-  const LegendreArgs<Real> a = legendre_args(phi, m, one_minus_m);
-  if (a.s == 0) {
-    if (f_out) *f_out = phi;
-    return phi;
-  }
-  const Real s3 = a.s * a.s * a.s;
-  if (n == 0) {
-    const Real f = a.s * carlson_rf(a.c2, a.delta2, Real(1));
-    if (f_out) *f_out = f;
-    return f;
-  }
+  const LegendreArgs<W> a = legendre_args(phi, m, one_minus_m);
+  if (a.s == 0) return phi;
+  if (n == 0) return static_cast<Real>(a.s * rf_loop<Real>(a.c2, a.delta2, W(1)));
+  const W s3 = a.s * a.s * a.s;
   const Real N = (m - n) / one_minus_n;  // the transformed characteristic for n < 0
   if (n > 0 || !(N > 0)) {
     // Direct: Pi = s R_F + (n/3) s^3 R_J(c^2, Delta^2, 1, 1 - n s^2); the terms have equal
     // signs for n > 0 (the m < 0 fallback for n < 0 accepts some cancellation).
-    const Real p = (n <= Real(0.5)) ? 1 - n * a.s * a.s : a.c2 + one_minus_n * a.s * a.s;
-    if (!(p > 0)) {  // n == 1 at phi == pi/2 (only reachable through rounding): divergent
-      if (f_out) *f_out = a.s * carlson_rf(a.c2, a.delta2, Real(1));
-      return std::numeric_limits<Real>::infinity();
-    }
-    Real rf, rj;
-    carlson_rf_rj(a.c2, a.delta2, Real(1), p, rf, rj);
-    const Real f = a.s * rf;
-    if (f_out) *f_out = f;
-    return f + n / 3 * s3 * rj;
+    const W p = one_minus_n_s2(n, one_minus_n, a);
+    if (!(p > 0)) return std::numeric_limits<Real>::infinity();  // n == 1 at phi == pi/2
+    W rf, rj;
+    rf_rj_loop<Real>(a.c2, a.delta2, W(1), p, rf, rj);
+    return static_cast<Real>(a.s * rf + W(n) / 3 * s3 * rj);
   }
   // n < 0, N = (m - n)/(1 - n) in (0, 1): A&S 17.7.15 rearranged into three non-negative terms
   // (see the header comment). 1 - N = (1 - m)/(1 - n) and 1 - N s^2 = c^2 + (1 - N) s^2.
-  const Real one_minus_N = one_minus_m / one_minus_n;
-  const Real pN = a.c2 + one_minus_N * a.s * a.s;
-  Real rf, rj;
-  carlson_rf_rj(a.c2, a.delta2, Real(1), pN, rf, rj);
-  const Real f = a.s * rf;
-  if (f_out) *f_out = f;
-  const Real w = -n / one_minus_n;  // in (0, 1); kept apart so (1 - n)^2 never overflows
-  const Real mn = m - n;            // > 0
-  const Real delta = sqrt(a.delta2);
-  const Real sw = sqrt(w), smn = sqrt(mn);
-  const Real term_j = w * (one_minus_m / one_minus_n) / 3 * s3 * rj;
-  const Real term_atan = (sw / smn) * atan(sw * smn * a.s * a.c / delta);
-  return f / one_minus_n + term_j + term_atan;
+  const W one_minus_N = W(one_minus_m) / W(one_minus_n);
+  const W pN = a.c2 + one_minus_N * a.s * a.s;
+  W rf, rj;
+  rf_rj_loop<Real>(a.c2, a.delta2, W(1), pN, rf, rj);
+  const W w = W(-n) / W(one_minus_n);  // in (0, 1); kept apart so (1 - n)^2 never overflows
+  const W mn = W(m) - W(n);            // > 0
+  const W sw = sqrt(w), smn = sqrt(mn);
+  const W term_j = w * one_minus_N / 3 * s3 * rj;
+  const W arg = sw * smn * a.s * a.c / sqrt(a.delta2);
+  const W term_atan = (sw / smn) * W(atan(static_cast<Real>(arg)));
+  return static_cast<Real>(a.s * rf / W(one_minus_n) + term_j + term_atan);
 }
 
 // Reduction of any finite phi to [0, pi/2]: phi = k pi + r with |r| <= pi/2, then
@@ -367,11 +386,14 @@ inline Real ellint_pi(Real n, Real phi, Real m) {
 // (DLMF 19.25.13). F - E = m D without cancellation.
 template <class Real>
 inline Real ellint_d(Real phi, Real m, Real one_minus_m) {
+  using W = detail::work_t<Real>;
   if (!(m <= 1) || !(one_minus_m >= 0) || !detail::in_phi_domain(phi))
     return detail::quiet_nan<Real>();
   const auto a = detail::legendre_args(phi, m, one_minus_m);
   if (a.s == 0) return Real(0);
-  return a.s * a.s * a.s / 3 * carlson_rd(a.c2, a.delta2, Real(1));
+  W rf, rd;
+  detail::rf_rj_loop<Real>(a.c2, a.delta2, W(1), W(1), rf, rd);
+  return static_cast<Real>(a.s * a.s * a.s / 3 * rd);
 }
 template <class Real>
 inline Real ellint_d(Real phi, Real m) {
@@ -381,12 +403,14 @@ inline Real ellint_d(Real phi, Real m) {
 // E(phi|m) = int_0^phi sqrt(1 - m sin^2 t) dt = F - m D (DLMF 19.25.9).
 template <class Real>
 inline Real ellint_e(Real phi, Real m, Real one_minus_m) {
+  using W = detail::work_t<Real>;
   if (!(m <= 1) || !(one_minus_m >= 0) || !detail::in_phi_domain(phi))
     return detail::quiet_nan<Real>();
   const auto a = detail::legendre_args(phi, m, one_minus_m);
   if (a.s == 0) return Real(0);
-  return a.s * carlson_rf(a.c2, a.delta2, Real(1)) -
-         m * a.s * a.s * a.s / 3 * carlson_rd(a.c2, a.delta2, Real(1));
+  W rf, rd;
+  detail::rf_rj_loop<Real>(a.c2, a.delta2, W(1), W(1), rf, rd);
+  return static_cast<Real>(a.s * rf - W(m) * a.s * a.s * a.s / 3 * rd);
 }
 template <class Real>
 inline Real ellint_e(Real phi, Real m) {
@@ -394,29 +418,35 @@ inline Real ellint_e(Real phi, Real m) {
 }
 
 // Complete integrals K(m) = R_F(0, 1 - m, 1), E(m) = K - (m/3) R_D(0, 1 - m, 1) (DLMF 19.25.1),
-// taking the complement mc = 1 - m.
+// taking the complement mc = 1 - m (m = 1 - mc).
 template <class Real>
 inline Real ellint_k_complete(Real one_minus_m) {
   return carlson_rf(Real(0), one_minus_m, Real(1));
 }
 template <class Real>
 inline Real ellint_e_complete(Real one_minus_m) {
-  const Real m = 1 - one_minus_m;
-  return carlson_rf(Real(0), one_minus_m, Real(1)) -
-         m / 3 * carlson_rd(Real(0), one_minus_m, Real(1));
+  using W = detail::work_t<Real>;
+  if (!(one_minus_m > 0)) return one_minus_m == 0 ? Real(1) : detail::quiet_nan<Real>();
+  W rf, rd;
+  detail::rf_rj_loop<Real>(W(0), W(one_minus_m), W(1), W(1), rf, rd);
+  return static_cast<Real>(rf - (1 - W(one_minus_m)) / 3 * rd);
 }
 
 // Pi(n; phi|m) - F(phi|m) = n int_0^phi sin^2 t / ((1 - n sin^2 t) Delta) dt
 //                         = (n/3) s^3 R_J(c^2, Delta^2, 1, 1 - n s^2): one term, no cancellation.
 template <class Real>
 inline Real ellint_pi_minus_f(Real n, Real one_minus_n, Real phi, Real m, Real one_minus_m) {
+  using W = detail::work_t<Real>;
   if (!(m <= 1) || !(one_minus_m >= 0) || !(n <= 1) || !(one_minus_n >= 0) ||
       !detail::in_phi_domain(phi))
     return detail::quiet_nan<Real>();
   const auto a = detail::legendre_args(phi, m, one_minus_m);
   if (a.s == 0 || n == 0) return Real(0);
-  const Real p = (n <= Real(0.5)) ? 1 - n * a.s * a.s : a.c2 + one_minus_n * a.s * a.s;
-  return n / 3 * a.s * a.s * a.s * carlson_rj(a.c2, a.delta2, Real(1), p);
+  const W p = detail::one_minus_n_s2(n, one_minus_n, a);
+  if (!(p > 0)) return std::numeric_limits<Real>::infinity();
+  W rf, rj;
+  detail::rf_rj_loop<Real>(a.c2, a.delta2, W(1), p, rf, rj);
+  return static_cast<Real>(W(n) / 3 * a.s * a.s * a.s * rj);
 }
 template <class Real>
 inline Real ellint_pi_minus_f(Real n, Real phi, Real m) {
@@ -425,13 +455,14 @@ inline Real ellint_pi_minus_f(Real n, Real phi, Real m) {
 
 // (1 - n) Pi(n; phi|m) - F(phi|m) = -n int_0^phi cos^2 t / ((1 - n sin^2 t) Delta) dt, the
 // bracket of Guillen et al. 2017 eq. (11) with n = -b_t^2. For n < 0 (and m >= 0) it is
-//   (-n (1-m) / (3 (1-n))) s^3 R_J(c^2, Delta^2, 1, 1 - N s^2)
+//   ((-n) (1-m) / (3 (1-n))) s^3 R_J(c^2, Delta^2, 1, 1 - N s^2)
 //     + sqrt(-n (1-n) / (m-n)) atan(sqrt(-n (m-n)/(1-n)) s c / Delta),
 // two positive terms (the n < 0 form of Pi above times (1 - n), minus F). For 0 <= n < 1 it is
 // (1 - n)(Pi - F) - n F, whose terms have opposite signs (relative error ~ eps (1 + n F/|result|)).
 template <class Real>
 inline Real ellint_one_minus_n_pi_minus_f(Real n, Real one_minus_n, Real phi, Real m,
                                           Real one_minus_m) {
+  using W = detail::work_t<Real>;
   using std::atan;
   using std::sqrt;
   if (!(m <= 1) || !(one_minus_m >= 0) || !(n <= 1) || !(one_minus_n >= 0) ||
@@ -439,23 +470,25 @@ inline Real ellint_one_minus_n_pi_minus_f(Real n, Real one_minus_n, Real phi, Re
     return detail::quiet_nan<Real>();
   const auto a = detail::legendre_args(phi, m, one_minus_m);
   if (a.s == 0 || n == 0) return Real(0);
-  const Real s3 = a.s * a.s * a.s;
+  const W s3 = a.s * a.s * a.s;
+  W rf, rj;
   if (n < 0 && m >= 0) {
-    const Real one_minus_N = one_minus_m / one_minus_n;
-    const Real pN = a.c2 + one_minus_N * a.s * a.s;
-    const Real rj = carlson_rj(a.c2, a.delta2, Real(1), pN);
-    const Real w = -n / one_minus_n;
-    const Real mn = m - n;
-    const Real sw = sqrt(w), smn = sqrt(mn);
-    const Real term_j = w * one_minus_m / 3 * s3 * rj;
-    const Real term_atan =
-        sqrt(-n) * (sqrt(one_minus_n) / smn) * atan(sw * smn * a.s * a.c / sqrt(a.delta2));
-    return term_j + term_atan;
+    const W one_minus_N = W(one_minus_m) / W(one_minus_n);
+    const W pN = a.c2 + one_minus_N * a.s * a.s;
+    detail::rf_rj_loop<Real>(a.c2, a.delta2, W(1), pN, rf, rj);
+    const W w = W(-n) / W(one_minus_n);
+    const W mn = W(m) - W(n);
+    const W sw = sqrt(w), smn = sqrt(mn);
+    const W term_j = w * W(one_minus_m) / 3 * s3 * rj;  // (-n)(1-m)/(3(1-n)) s^3 R_J
+    const W arg = sw * smn * a.s * a.c / sqrt(a.delta2);
+    const W term_atan =
+        sqrt(W(-n)) * (sqrt(W(one_minus_n)) / smn) * W(atan(static_cast<Real>(arg)));
+    return static_cast<Real>(term_j + term_atan);
   }
-  const Real p = (n <= Real(0.5)) ? 1 - n * a.s * a.s : a.c2 + one_minus_n * a.s * a.s;
-  Real rf, rj;
-  detail::carlson_rf_rj(a.c2, a.delta2, Real(1), p, rf, rj);
-  return one_minus_n * (n / 3 * s3 * rj) - n * a.s * rf;
+  const W p = detail::one_minus_n_s2(n, one_minus_n, a);
+  if (!(p > 0)) return detail::quiet_nan<Real>();
+  detail::rf_rj_loop<Real>(a.c2, a.delta2, W(1), p, rf, rj);
+  return static_cast<Real>(W(one_minus_n) * (W(n) / 3 * s3 * rj) - W(n) * a.s * rf);
 }
 template <class Real>
 inline Real ellint_one_minus_n_pi_minus_f(Real n, Real phi, Real m) {
