@@ -102,15 +102,16 @@ class SobolXor {
 class SobolOwen {
  public:
   explicit SobolOwen(uint64_t seed)
-      : seed_x_(derive_seed(seed, 0x50d1)), seed_y_(derive_seed(seed, 0x50d2)) {}
+      : key_x_(OwenKey::from_seed(derive_seed(seed, 0x50d1))),
+        key_y_(OwenKey::from_seed(derive_seed(seed, 0x50d2))) {}
   FixedPoint2 fixed_at(uint32_t index) const {
-    return {reverse_bits(owen_hash_reversed(index, seed_x_)),
-            reverse_bits(owen_hash_reversed(sobol_dim1_reversed(index), seed_y_))};
+    return {reverse_bits(owen_hash_reversed(index, key_x_)),
+            reverse_bits(owen_hash_reversed(sobol_dim1_reversed(index), key_y_))};
   }
   Point2 at(uint32_t index) const { return to_point(fixed_at(index)); }
 
  private:
-  uint64_t seed_x_, seed_y_;
+  OwenKey key_x_, key_y_;
 };
 
 }  // namespace disklab::sequence

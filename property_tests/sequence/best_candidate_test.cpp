@@ -1,0 +1,60 @@
+// Best candidates (Mitchell 1991): the point of the method is a large minimum distance. At equal
+// N its minimum (toroidal) distance must clearly exceed that of uniform random points.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "common.h"
+#include "disklab/sequence/random.h"
+#include "disklab/sequence/tabulated.h"
+
+namespace disklab::sequence {
+namespace {
+
+double min_toroidal_distance(const std::vector<Point2>& p) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < p.size(); ++i)
+    for (std::size_t j = i + 1; j < p.size(); ++j) {
+      double dx = std::abs(p[i].x - p[j].x), dy = std::abs(p[i].y - p[j].y);
+      dx = std::min(dx, 1.0 - dx);
+      dy = std::min(dy, 1.0 - dy);
+      best = std::min(best, dx * dx + dy * dy);
+    }
+  return std::sqrt(best);
+}
+
+template <class Gen>
+std::vector<Point2> prefix(const Gen& gen, uint32_t n) {
+  std::vector<Point2> p(n);
+  for (uint32_t i = 0; i < n; ++i)
+    p[i] = gen.at(i);
+  return p;
+}
+
+TEST(BestCandidate, MinimumDistanceWellAboveRandom) {
+  // Every prefix N (it is progressive), several seeds: the worst best-candidate minimum distance
+  // against the best random one must still exceed kBestCandidateMinDistanceFactor.
+  for (uint32_t n : {64u, 512u, 4096u}) {
+    double worst_bc = std::numeric_limits<double>::infinity(), best_random = 0.0;
+    for (uint64_t seed : test::seq::kStructureSeeds) {
+      const BestCandidate bc(seed, 4096);
+      worst_bc = std::min(worst_bc, min_toroidal_distance(prefix(bc, n)));
+      best_random = std::max(best_random, min_toroidal_distance(prefix(RandomSequence(seed), n)));
+    }
+    const double ratio = worst_bc / best_random;
+    RecordProperty("ratio_N" + std::to_string(n), std::to_string(ratio));
+    EXPECT_GT(ratio, test::seq::kBestCandidateMinDistanceFactor)
+        << "N=" << n << ": best-candidate min distance " << worst_bc
+        << " (worst of seeds) vs random " << best_random << " (best of seeds); ratio " << ratio;
+    // And it is a sensible fraction of the densest packing scale: a hexagonal packing of N disks
+    // has spacing sqrt(2 / (sqrt(3) N)); best candidates with a fixed count reach a fraction.
+    const double hex = std::sqrt(2.0 / (std::sqrt(3.0) * n));
+    EXPECT_LT(worst_bc, hex) << "N=" << n << ": closer than hexagonal packing allows";
+  }
+}
+
+}  // namespace
+}  // namespace disklab::sequence
