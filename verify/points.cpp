@@ -1,0 +1,294 @@
+// `disklab points`: a square sequence, optionally mapped to the disk by a strategy, as CSV or
+// as a picture like the memo's Figs. 2 and 3 (Christensen 2018).
+//
+//   disklab points --strategy NAME --sequence NAME --seed S --count N [--format csv|png] [--out F]
+//     CSV: index,u,v,x,y,weight. `index` is the disk-sample number s = 0..N-1; (u, v) is the
+//     square point it used (polar4/concentric4: point s div 4, rotated by (s mod 4) * 90
+//     degrees; rejection: the accepted point, rejected ones are skipped and counted on stderr);
+//     weight is the estimator weight (pad-zero 4/pi or 0, else 1).
+//   Without --strategy: the square points themselves, CSV index,u,v (Fig. 2).
+//
+// Options live in PointsState and each output mode is one function, so another family of maps
+// (e.g. spherical-ellipse maps) adds its options and a generator of rows without touching the
+// CSV/PNG writers.
+#include <unistd.h>
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "command.h"
+#include "common/args.h"
+#include "common/output.h"
+#include "disklab/disk/strategy.h"
+#include "disklab/sequence/sequence.h"
+
+namespace disklab::cli {
+namespace {
+namespace fs = std::filesystem;
+
+// Large enough for any picture or study, small enough to keep a CSV on disk sane.
+constexpr int64_t kMaxCount = 10'000'000;
+constexpr int64_t kMaxCountPng = 1'000'000;
+// Strata images are drawn when the square points form a small n x n grid's worth.
+constexpr int kMaxStrataGrid = 32;
+constexpr int kStrataLineSegments = 96;
+
+struct PointsState {
+  std::string strategy;  // empty: square points
+  std::string sequence = "random";
+  std::string seed_text = "1";  // parsed strictly: CLI11 would wrap "-1" to 2^64 - 1
+  uint64_t seed = 1;
+  int64_t count = 256;
+  std::string format = "csv";
+  std::string out;  // empty: stdout (CSV only)
+};
+
+struct Row {
+  uint32_t index;
+  Point2 uv, xy;
+  double weight;
+};
+
+struct Generated {
+  std::vector<Row> rows;
+  uint32_t square_points = 0;  // square points consumed
+  bool mapped = false;         // rows carry x, y, weight
+};
+
+Generated generate(const PointsState& s, const sequence::Sequence& seq) {
+  Generated g;
+  const auto n = static_cast<uint32_t>(s.count);
+  g.rows.reserve(n);
+  if (s.strategy.empty()) {
+    for (uint32_t i = 0; i < n; ++i)
+      g.rows.push_back({i, seq.at(i), {}, 1.0});
+    g.square_points = n;
+    return g;
+  }
+  g.mapped = true;
+  disk::DiskSampler<sequence::Sequence> sampler(*disk::parse_strategy(s.strategy), seq);
+  for (uint32_t i = 0; i < n; ++i) {
+    const disk::DiskSample d = sampler.next();
+    g.rows.push_back({i, d.uv, d.point, d.weight});
+  }
+  g.square_points = sampler.cursor();
+  return g;
+}
+
+std::string to_csv(const Generated& g) {
+  std::string csv = g.mapped ? "index,u,v,x,y,weight\n" : "index,u,v\n";
+  for (const Row& r : g.rows) {
+    csv += std::to_string(r.index) + "," + fmt17(r.uv.x) + "," + fmt17(r.uv.y);
+    if (g.mapped) csv += "," + fmt17(r.xy.x) + "," + fmt17(r.xy.y) + "," + fmt17(r.weight);
+    csv += "\n";
+  }
+  return csv;
+}
+
+// Images of the grid lines u = i/n and v = j/n under the strategy (polylines "line,x,y"), when
+// the square points used fill an n x n grid exactly: the strata of the memo's Fig. 3.
+std::string strata_lines(disk::Strategy strategy, uint32_t square_points) {
+  const int n = static_cast<int>(std::lround(std::sqrt(double(square_points))));
+  if (n < 2 || n > kMaxStrataGrid || uint32_t(n * n) != square_points) return {};
+  std::ostringstream out;
+  out << "line,x,y\n";
+  int line = 0;
+  auto emit = [&](auto point_of_t) {
+    const std::vector<int> copies = disk::copies_per_square_point(strategy) == 4
+                                        ? std::vector<int>{0, 1, 2, 3}
+                                        : std::vector<int>{0};
+    for (int k : copies) {
+      for (int t = 0; t <= kStrataLineSegments; ++t) {
+        Point2 uv = point_of_t(double(t) / kStrataLineSegments);
+        Point2 p;
+        switch (strategy) {
+          case disk::Strategy::polar:
+            p = disk::sample_polar(uv);
+            break;
+          case disk::Strategy::concentric:
+            p = disk::sample_concentric(uv);
+            break;
+          case disk::Strategy::polar4:
+            p = disk::rotate_quarter_turns(disk::sample_polar_quarter(uv), k);
+            break;
+          case disk::Strategy::concentric4:
+            p = disk::rotate_quarter_turns(disk::sample_concentric_quarter(uv), k);
+            break;
+          default:
+            p = disk::square_to_centered(uv);
+            break;
+        }
+        out << line << ',' << fmt17(p.x) << ',' << fmt17(p.y) << '\n';
+      }
+      ++line;
+    }
+  };
+  for (int i = 0; i <= n; ++i) {
+    emit([&](double t) { return Point2{double(i) / n, t}; });
+    emit([&](double t) { return Point2{t, double(i) / n}; });
+  }
+  return out.str();
+}
+
+// --out must name a file in an existing, writable folder: checked before any work so a bad path
+// fails fast with exit 2, and AtomicFile guarantees nothing partial appears on later errors.
+void check_out_path(const std::string& out) {
+  const fs::path p(out);
+  if (fs::is_directory(p)) throw UsageError("--out: '" + out + "' is a folder, not a file");
+  const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
+  if (!fs::is_directory(dir))
+    throw UsageError("--out: folder '" + dir.string() + "' does not exist");
+  if (::access(dir.c_str(), W_OK) != 0)
+    throw UsageError("--out: folder '" + dir.string() + "' is not writable");
+}
+
+std::string plot_title(const PointsState& s, const Generated& g) {
+  std::string t = s.strategy.empty() ? "square" : s.strategy;
+  t += ": " + std::to_string(g.rows.size()) + " points, " + s.sequence + " seed " +
+       std::to_string(s.seed);
+  if (!s.strategy.empty() && g.square_points != g.rows.size())
+    t += " (" + std::to_string(g.square_points) + " square points)";
+  return t;
+}
+
+void write_png(const PointsState& s, const Generated& g, const fs::path& png) {
+  // The plot script reads the rows from a temporary CSV (removed whatever happens).
+  const fs::path tmp = fs::temp_directory_path();
+  const std::string tag = std::to_string(::getpid());
+  const fs::path csv = tmp / ("disklab-points-" + tag + ".csv");
+  const fs::path lines = tmp / ("disklab-strata-" + tag + ".csv");
+  struct Cleanup {
+    std::vector<fs::path> files;
+    ~Cleanup() {
+      std::error_code ec;
+      for (const auto& f : files)
+        fs::remove(f, ec);
+    }
+  } cleanup{{csv, lines}};
+  {
+    std::ofstream f(csv);
+    f << to_csv(g);
+    if (!f) throw std::runtime_error("cannot write temporary " + csv.string());
+  }
+  std::vector<std::string> args = {"--csv", csv.string(), "--title", plot_title(s, g)};
+  if (g.mapped) {
+    const disk::Strategy strategy = *disk::parse_strategy(s.strategy);
+    args.insert(args.end(), {"--mode", "disk"});
+    if (strategy == disk::Strategy::pad_zero || strategy == disk::Strategy::rejection)
+      args.insert(args.end(), {"--square-outline"});
+    const std::string strata = strata_lines(strategy, g.square_points);
+    if (!strata.empty()) {
+      std::ofstream f(lines);
+      f << strata;
+      args.insert(args.end(), {"--lines", lines.string()});
+    }
+  } else {
+    args.insert(args.end(), {"--mode", "square"});
+  }
+  run_plot("points", args, png);
+}
+
+uint64_t parse_seed(const std::string& text) {
+  uint64_t value = 0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (text.empty() || ec != std::errc() || ptr != end)
+    throw UsageError("--seed: '" + text + "' is not an unsigned 64-bit integer");
+  return value;
+}
+
+void validate(PointsState& s) {
+  s.seed = parse_seed(s.seed_text);
+  if (!s.strategy.empty()) require_one_of(s.strategy, disk::strategy_names(), "--strategy");
+  require_one_of(s.sequence, sequence::sequence_names(), "--sequence");
+  require_one_of(s.format, {"csv", "png"}, "--format");
+  if (s.count <= 0) throw UsageError("--count: " + std::to_string(s.count) + " must be positive");
+  const int64_t cap = s.format == "png" ? kMaxCountPng : kMaxCount;
+  if (s.count > cap)
+    throw UsageError("--count: " + std::to_string(s.count) + " is above the limit " +
+                     std::to_string(cap) + " for --format " + s.format);
+  if (s.format == "png" && s.out.empty()) throw UsageError("--format png needs --out FILE.png");
+  if (!s.out.empty()) check_out_path(s.out);
+}
+
+// Writes the CSV or PNG for `s` to `out` (atomically), or the CSV to stdout when out is empty.
+void produce(const PointsState& s, const std::string& out) {
+  const auto seq = sequence::make_sequence(s.sequence, s.seed);
+  const Generated g = generate(s, *seq);
+  if (s.strategy == "rejection" && std::getenv("DISKLAB_QUIET") == nullptr)
+    std::fprintf(stderr, "points: rejection used %u square points for %zu disk samples\n",
+                 g.square_points, g.rows.size());
+  if (s.format == "png") {
+    write_png(s, g, out);
+  } else if (out.empty()) {
+    const std::string csv = to_csv(g);
+    std::fwrite(csv.data(), 1, csv.size(), stdout);
+  } else {
+    write_file_atomic(out, to_csv(g));
+  }
+}
+
+int run_points(PointsState s) {
+  validate(s);
+  produce(s, s.out);
+  return 0;
+}
+
+// `disklab report`: the six strategies with 256 random points each, as PNG and CSV.
+int report_points(const ReportOptions& options) {
+  for (const auto& name : disk::strategy_names()) {
+    PointsState s;
+    s.strategy = name;
+    s.sequence = "random";
+    s.seed = 1;
+    s.count = 256;
+    s.format = "csv";
+    produce(s, (options.dir / ("points_" + name + ".csv")).string());
+    s.format = "png";
+    produce(s, (options.dir / ("points_" + name + ".png")).string());
+  }
+  return 0;
+}
+
+std::function<int()> setup_points(CLI::App& sub) {
+  auto state = std::make_shared<PointsState>();
+  std::string strategies, sequences;
+  for (const auto& n : disk::strategy_names())
+    strategies += " " + n;
+  for (const auto& n : sequence::sequence_names())
+    sequences += " " + n;
+  sub.add_option("--strategy", state->strategy,
+                 "Square-to-disk strategy (omit for the square points):" + strategies);
+  sub.add_option("--sequence", state->sequence, "Square sequence:" + sequences)
+      ->capture_default_str();
+  sub.add_option("--seed", state->seed_text, "Randomization seed (unsigned 64-bit)")
+      ->capture_default_str();
+  sub.add_option("--count", state->count, "Number of points (disk samples with --strategy)")
+      ->capture_default_str();
+  sub.add_option("--format", state->format, "csv or png")->capture_default_str();
+  sub.add_option("--out", state->out, "Output file (default: CSV on stdout)");
+  sub.footer(
+      "CSV columns: index,u,v,x,y,weight with --strategy (weight: pad-zero 4/pi or 0, else 1;\n"
+      "polar4/concentric4 reuse square point index/4 rotated by (index mod 4) * 90 degrees;\n"
+      "rejection skips rejected square points and reports how many it used on stderr);\n"
+      "index,u,v without. PNG: the disk like the memo's Fig. 3 (strata images when the square\n"
+      "points fill an n x n grid, n <= 32), or the unit square like Fig. 2.\n"
+      "Examples:\n"
+      "  disklab points --strategy polar4 --sequence random --seed 7 --count 64\n"
+      "  disklab points --strategy concentric --count 256 --format png --out concentric.png\n"
+      "  disklab points --sequence random --count 500 --format png --out square.png");
+  return [state] { return run_points(*state); };
+}
+
+const Registrar kPoints{Command{"points", "Sample points on the square or the disk (CSV or PNG)",
+                                setup_points, report_points}};
+
+}  // namespace
+}  // namespace disklab::cli
