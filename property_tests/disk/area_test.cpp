@@ -82,6 +82,35 @@ TEST(StratumArea, ConcentricQuarter) {
   check_strata({"concentric-quarter", sample_concentric_quarter, kPi / 4.0});
 }
 
+// Elementary intervals of base 2 with 2^m cells, the strata a (0,2)-sequence fills one point
+// each (Christensen et al. 2018): [i/2^k, (i+1)/2^k) x [j/2^(m-k), (j+1)/2^(m-k)), every k.
+// Thin slabs test the maps along whole rows and columns of the square, not just squares.
+TEST(StratumArea, ElementaryIntervalsOfEveryShape) {
+  constexpr int m = 6;
+  const MapCase cases[] = {{"polar", sample_polar, kPi},
+                           {"concentric", sample_concentric, kPi},
+                           {"polar-quarter", sample_polar_quarter, kPi / 4.0},
+                           {"concentric-quarter", sample_concentric_quarter, kPi / 4.0}};
+  for (const MapCase& mc : cases) {
+    const double expected = mc.total / (1 << m);
+    for (int k = 0; k <= m; ++k) {
+      const int nu = 1 << k, nv = 1 << (m - k);
+      for (int i = 0; i < nu; ++i) {
+        for (int j = 0; j < nv; ++j) {
+          const AreaEstimate a =
+              stratum_image_area(mc.map, double(i) / nu, double(i + 1) / nu, double(j) / nv,
+                                 double(j + 1) / nv, kQuadratureRel * expected);
+          ASSERT_LE(a.error, kQuadratureMaxRel * expected)
+              << mc.name << " k=" << k << " cell " << i << "," << j;
+          ASSERT_LE(std::fabs(a.area - expected), kAreaRel * expected)
+              << mc.name << " k=" << k << " cell (" << i << ", " << j << ") of " << nu << "x"
+              << nv << ": area " << a.area << " expected " << expected;
+        }
+      }
+    }
+  }
+}
+
 // The same comparison must fail for a map that is not area-preserving: the seed blog's
 // linear-radius polar map gives the inner ring of an n x n grid far too little area (radius v
 // instead of sqrt(v)). The blog's (u, v) = (angle, radius) order reverses the orientation, so

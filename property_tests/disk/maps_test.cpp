@@ -13,6 +13,7 @@
 #include "disklab/disk/concentric.h"
 #include "disklab/disk/polar.h"
 #include "disklab/math/constants.h"
+#include "disklab/sequence/random.h"
 
 namespace {
 using disklab::Point2;
@@ -372,6 +373,62 @@ TEST(Quadrant, FoldUndoesEveryRotationExactly) {
         EXPECT_EQ(f.k, k);
       }
     }
+  }
+}
+
+// ---- a dense sweep: 2^20 random square points and 2^20 random disk points per map ----
+// rapidcheck tries ~100 cases per property; this sweep backs the same tolerances with a million
+// and reports the worst error found, in ulps of 1 (absolute) or of u (relative, polar u).
+constexpr uint32_t kSweep = 1u << 20;
+
+struct Worst {
+  double err = 0.0;
+  Point2 at;
+  void update(double e, Point2 where) {
+    if (e > err) {
+      err = e;
+      at = where;
+    }
+  }
+};
+
+TEST(Sweep, RoundTripErrorsStayWithinTheArguedBounds) {
+  const disklab::sequence::RandomSequence seq(12345);
+  Worst polar_u, polar_v, pq_v, conc, cq, fwd_polar, fwd_conc, fwd_pq, fwd_cq;
+  for (uint32_t i = 0; i < kSweep; ++i) {
+    const Point2 uv = seq.at(i);
+    const Point2 bp = invert_polar(sample_polar(uv));
+    polar_u.update(std::fabs(bp.x - uv.x) / uv.x, uv);
+    polar_v.update(periodic_dist(bp.y, uv.y), uv);
+    pq_v.update(std::fabs(invert_polar_quarter(sample_polar_quarter(uv)).y - uv.y), uv);
+    conc.update(dist(invert_concentric(sample_concentric(uv)), uv), uv);
+    cq.update(dist(invert_concentric_quarter(sample_concentric_quarter(uv)), uv), uv);
+    const Point2 p = {2.0 * uv.x - 1.0, 2.0 * uv.y - 1.0};
+    if (p.x * p.x + p.y * p.y > 1.0) continue;
+    fwd_polar.update(dist(sample_polar(invert_polar(p)), p), p);
+    fwd_conc.update(dist(sample_concentric(invert_concentric(p)), p), p);
+    const Point2 q = first_quadrant(p);
+    fwd_pq.update(dist(sample_polar_quarter(invert_polar_quarter(q)), q), q);
+    fwd_cq.update(dist(sample_concentric_quarter(invert_concentric_quarter(q)), q), q);
+  }
+  struct Line {
+    const char* what;
+    const Worst& w;
+    double bound;
+  };
+  const Line lines[] = {{"polar u (relative)", polar_u, kPolarURel},
+                        {"polar v (periodic)", polar_v, kRoundTripAbs},
+                        {"polar-quarter v", pq_v, kRoundTripAbs},
+                        {"concentric uv", conc, kRoundTripAbs},
+                        {"concentric-quarter uv", cq, kRoundTripAbs},
+                        {"polar x from disk point", fwd_polar, kRoundTripAbs},
+                        {"concentric x from disk point", fwd_conc, kRoundTripAbs},
+                        {"polar-quarter x", fwd_pq, kRoundTripAbs},
+                        {"concentric-quarter x", fwd_cq, kRoundTripAbs}};
+  for (const Line& l : lines) {
+    std::printf("  %-30s worst %.2f ulp (bound %.0f) at %s\n", l.what, l.w.err / kEps,
+                l.bound / kEps, str(l.w.at).c_str());
+    EXPECT_LE(l.w.err, l.bound) << l.what << " at " << str(l.w.at);
   }
 }
 
