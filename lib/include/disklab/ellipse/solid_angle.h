@@ -291,17 +291,27 @@ QuadratureResult<Real> solid_angle_boundary_quadrature(Real h, Real e, Real r, R
         dot >= 0 ? L0 * L2 + dot : r * r * (h * h + e * e * s * s) / (L0 * L2 - dot);
     return h * r * r / (L2 * bracket);
   };
-  // Trapezoid on [0, pi], then times 2 (even integrand).
+  // Trapezoid on [0, pi], then times 2 (even integrand). The running sum is compensated
+  // (Neumaier): it accumulates up to millions of terms across levels, and plain summation would
+  // drift by ~N eps, which the stopping test would mistake for a lack of convergence.
+  Real sum = 0, comp = 0;
+  auto add = [&](const Real& x) {
+    using std::abs;
+    const Real t = sum + x;
+    comp += abs(sum) >= abs(x) ? (sum - t) + x : (x - t) + sum;
+    sum = t;
+  };
   long n = 8;
-  Real sum = (f(Real(0)) + f(pi)) / 2;
+  add(f(Real(0)) / 2);
+  add(f(pi) / 2);
   for (long k = 1; k < n; ++k)
-    sum += f(pi * Real(k) / Real(n));
-  Real estimate = 2 * pi / Real(n) * sum;
+    add(f(pi * Real(k) / Real(n)));
+  Real estimate = 2 * pi / Real(n) * (sum + comp);
   for (int level = 3; level < max_log2_intervals; ++level) {
     for (long k = 1; k < 2 * n; k += 2)
-      sum += f(pi * Real(k) / Real(2 * n));
+      add(f(pi * Real(k) / Real(2 * n)));
     n *= 2;
-    const Real next = 2 * pi / Real(n) * sum;
+    const Real next = 2 * pi / Real(n) * (sum + comp);
     using std::abs;
     out.change = abs(next - estimate);
     estimate = next;
