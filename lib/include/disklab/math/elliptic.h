@@ -209,6 +209,7 @@ template <class Real>
 inline Real carlson_rc(Real x, Real y) {
   using std::atan;
   using std::atanh;
+  using std::log;
   using std::sqrt;
   if (!(x >= 0) || !(y > 0)) return detail::quiet_nan<Real>();
   if (x == y) return 1 / sqrt(x);
@@ -217,7 +218,10 @@ inline Real carlson_rc(Real x, Real y) {
     return atan(sqrt(d / x)) / sqrt(d);  // x = 0 gives atan(inf) = pi/2
   }
   const Real d = x - y;
-  return atanh(sqrt(d / x)) / sqrt(d);
+  const Real r = sqrt(d / x);
+  if (r < Real(0.5)) return atanh(r) / r / sqrt(x);
+  // atanh(r) with 1 - r^2 = y/x: log((sqrt x + sqrt(x - y))/sqrt y), no 1 - r cancellation.
+  return log((sqrt(x) + sqrt(d)) / sqrt(y)) / sqrt(d);
 }
 
 // R_F(x, y, z) = (1/2) int_0^inf dt / sqrt((t+x)(t+y)(t+z)), DLMF 19.36.1.
