@@ -28,12 +28,7 @@ const std::vector<std::string> kMemoOrder = {"random",           "best-candidate
 // so the many-seed tests build them with a small capacity; the registry's own instances are
 // tested for determinism and range below.
 std::unique_ptr<Sequence> make_small(const std::string& name, uint64_t seed, uint32_t capacity) {
-  if (name == "best-candidate")
-    return std::make_unique<SequenceAdapter<BestCandidate>>(name, BestCandidate(seed, capacity));
-  if (name == "pmj02") return std::make_unique<SequenceAdapter<Pmj02>>(name, Pmj02(seed, capacity));
-  if (name == "pmj02bn")
-    return std::make_unique<SequenceAdapter<Pmj02BlueNoise>>(name, Pmj02BlueNoise(seed, capacity));
-  return make_sequence(name, seed);
+  return make_sequence(name, seed, capacity);
 }
 
 // Indices that exercise the table edges, digit carries and the end of the index range.
@@ -91,6 +86,15 @@ RC_GTEST_PROP(Contract, AnySeedAnyIndexInRange, (uint64_t seed, uint32_t index))
     RC_ASSERT(p.x < 1.0);
     RC_ASSERT(p.y >= 0.0);
     RC_ASSERT(p.y < 1.0);
+  }
+}
+
+TEST(Contract, MaxCountOnlyChangesTheTableSize) {
+  // make_sequence(name, seed, max_count) gives the same points as make_sequence(name, seed).
+  for (const std::string& name : kMemoOrder) {
+    const auto full = make_sequence(name, 9), small = make_sequence(name, 9, 300);
+    for (uint32_t i = 0; i < 300; ++i)
+      ASSERT_EQ(full->at(i), small->at(i)) << name << " index " << i;
   }
 }
 

@@ -1,4 +1,5 @@
 // Name -> generator table for the CLI and the experiments. Add each new generator here once.
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
@@ -13,27 +14,27 @@ namespace {
 
 struct Entry {
   const char* name;
-  std::unique_ptr<Sequence> (*make)(uint64_t seed);
+  std::unique_ptr<Sequence> (*make)(const char* name, uint64_t seed, uint32_t capacity);
 };
 
 template <class Gen>
-std::unique_ptr<Sequence> make_adapter(const char* name, uint64_t seed) {
+std::unique_ptr<Sequence> analytic(const char* name, uint64_t seed, uint32_t /*capacity*/) {
   return std::make_unique<SequenceAdapter<Gen>>(name, Gen(seed));
 }
 
-// Memo order (Christensen 2018, Fig. 2).
-// Ahmed ART (c) belongs between best-candidate and halton-rotated; it has its own issue.
+template <class Gen>
+std::unique_ptr<Sequence> tabulated(const char* name, uint64_t seed, uint32_t capacity) {
+  return std::make_unique<SequenceAdapter<Gen>>(name, Gen(seed, capacity));
+}
+
+// Memo order (Christensen 2018, Fig. 2). Ahmed ART (c) belongs between best-candidate and
+// halton-rotated; it has its own issue.
 const Entry kEntries[] = {
-    {"random", [](uint64_t s) { return make_adapter<RandomSequence>("random", s); }},
-    {"best-candidate", [](uint64_t s) { return make_adapter<BestCandidate>("best-candidate", s); }},
-    {"halton-rotated", [](uint64_t s) { return make_adapter<HaltonRotated>("halton-rotated", s); }},
-    {"halton-scrambled",
-     [](uint64_t s) { return make_adapter<HaltonScrambled>("halton-scrambled", s); }},
-    {"sobol-rotated", [](uint64_t s) { return make_adapter<SobolRotated>("sobol-rotated", s); }},
-    {"sobol-xor", [](uint64_t s) { return make_adapter<SobolXor>("sobol-xor", s); }},
-    {"sobol-owen", [](uint64_t s) { return make_adapter<SobolOwen>("sobol-owen", s); }},
-    {"pmj02", [](uint64_t s) { return make_adapter<Pmj02>("pmj02", s); }},
-    {"pmj02bn", [](uint64_t s) { return make_adapter<Pmj02BlueNoise>("pmj02bn", s); }},
+    {"random", analytic<RandomSequence>},        {"best-candidate", tabulated<BestCandidate>},
+    {"halton-rotated", analytic<HaltonRotated>}, {"halton-scrambled", analytic<HaltonScrambled>},
+    {"sobol-rotated", analytic<SobolRotated>},   {"sobol-xor", analytic<SobolXor>},
+    {"sobol-owen", analytic<SobolOwen>},         {"pmj02", tabulated<Pmj02>},
+    {"pmj02bn", tabulated<Pmj02BlueNoise>},
 };
 
 }  // namespace
@@ -46,8 +47,13 @@ std::vector<std::string> sequence_names() {
 }
 
 std::unique_ptr<Sequence> make_sequence(std::string_view name, uint64_t seed) {
+  return make_sequence(name, seed, kDefaultCapacity);
+}
+
+std::unique_ptr<Sequence> make_sequence(std::string_view name, uint64_t seed, uint32_t max_count) {
+  const uint32_t capacity = std::clamp<uint32_t>(max_count, 1u, 1u << 24);
   for (const Entry& e : kEntries)
-    if (name == e.name) return e.make(seed);
+    if (name == e.name) return e.make(e.name, seed, capacity);
   std::ostringstream msg;
   msg << "unknown sequence '" << name << "' (valid:";
   for (const Entry& e : kEntries)

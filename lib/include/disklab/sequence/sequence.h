@@ -45,6 +45,14 @@ std::vector<std::string> sequence_names();
 
 // Builds the generator called `name` randomized by `seed`.
 // Throws std::invalid_argument (listing the valid names) for an unknown name.
+// Sequences that precompute a table (best-candidate, pmj02, pmj02bn; see tabulated.h) size it
+// for 2^16 points here.
 std::unique_ptr<Sequence> make_sequence(std::string_view name, uint64_t seed);
+
+// Same, for a caller that will use at most `max_count` points: tabulated sequences then build a
+// table of max_count points (rounded up to a power of two, at most 2^24) instead of 2^16. The
+// points do not depend on the table size (each table is a prefix of the larger ones), so this
+// only saves set-up time (pmj02bn: ~2 s for 2^16 points).
+std::unique_ptr<Sequence> make_sequence(std::string_view name, uint64_t seed, uint32_t max_count);
 
 }  // namespace disklab::sequence

@@ -1,0 +1,261 @@
+// `disklab sequences`: L2-star discrepancy (Warnock's formula) of every square sequence of the
+// registry (Christensen 2018, Sec. 2), mean over seeds, next to the exact RMS for random points,
+// sqrt(5 / (36 N)).
+//
+//   disklab sequences --count N [--seeds K] [--seed S] [--sequences a,b,..] [--format md|csv|json]
+//                     [--out FILE]
+//
+// The report part writes that table (CSV + Markdown) and a grid of the first 500 points of each
+// sequence, like the memo's Fig. 2.
+#include <unistd.h>
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "command.h"
+#include "common/args.h"
+#include "common/output.h"
+#include "disklab/sequence/discrepancy.h"
+#include "disklab/sequence/sequence.h"
+
+namespace disklab::cli {
+namespace {
+namespace fs = std::filesystem;
+
+// Warnock's formula is O(N^2): 2^16 points is ~2e9 pair terms per seed and sequence (seconds).
+constexpr int64_t kMaxCount = 1 << 16;
+constexpr int64_t kMaxSeeds = 1000;
+constexpr int kFigurePoints = 500;  // the memo's Fig. 2
+
+struct SequencesState {
+  int64_t count = 1024;
+  int64_t seeds = 8;
+  std::string seed_text = "1";  // first seed; parsed strictly (CLI11 would wrap "-1")
+  uint64_t seed = 1;
+  std::string only;  // comma-separated subset, empty: all
+  std::string format = "md";
+  std::string out;
+};
+
+struct Row {
+  std::string name;
+  double mean = 0.0, std_error = 0.0, min = 0.0, max = 0.0;
+};
+
+uint64_t parse_seed(const std::string& text) {
+  uint64_t value = 0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (text.empty() || ec != std::errc() || ptr != end)
+    throw UsageError("--seed: '" + text + "' is not an unsigned 64-bit integer");
+  return value;
+}
+
+std::vector<std::string> selected_names(const std::string& only) {
+  const std::vector<std::string> all = sequence::sequence_names();
+  if (only.empty()) return all;
+  std::vector<std::string> names;
+  std::size_t start = 0;
+  while (start <= only.size()) {
+    const std::size_t comma = std::min(only.find(',', start), only.size());
+    const std::string name = only.substr(start, comma - start);
+    require_one_of(name, all, "--sequences");
+    names.push_back(name);
+    start = comma + 1;
+  }
+  return names;
+}
+
+void check_out_path(const std::string& out) {
+  const fs::path p(out);
+  if (fs::is_directory(p)) throw UsageError("--out: '" + out + "' is a folder, not a file");
+  const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
+  if (!fs::is_directory(dir))
+    throw UsageError("--out: folder '" + dir.string() + "' does not exist");
+  if (::access(dir.c_str(), W_OK) != 0)
+    throw UsageError("--out: folder '" + dir.string() + "' is not writable");
+}
+
+// Mean, standard error, min and max of the discrepancy over seeds seed .. seed + seeds - 1.
+// Parallel over (sequence, seed) pairs; each builds its own instance (thread-safe by contract).
+std::vector<Row> compute(const std::vector<std::string>& names, uint32_t count, int seeds,
+                         uint64_t first_seed) {
+  const int jobs = static_cast<int>(names.size()) * seeds;
+  std::vector<double> d(jobs, 0.0);
+  Progress progress("sequences", static_cast<uint64_t>(jobs));
+#pragma omp parallel for schedule(dynamic, 1)
+  for (int job = 0; job < jobs; ++job) {
+    const auto seq = sequence::make_sequence(names[job / seeds], first_seed + job % seeds, count);
+    std::vector<Point2> points(count);
+    for (uint32_t i = 0; i < count; ++i)
+      points[i] = seq->at(i);
+    d[job] = sequence::l2_star_discrepancy(points);
+    progress.tick();
+  }
+  progress.finish();
+  std::vector<Row> rows;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    Row r{names[k]};
+    double sum = 0.0, sum2 = 0.0;
+    r.min = d[k * seeds];
+    r.max = d[k * seeds];
+    for (int s = 0; s < seeds; ++s) {
+      const double v = d[k * seeds + s];
+      sum += v;
+      sum2 += v * v;
+      r.min = std::min(r.min, v);
+      r.max = std::max(r.max, v);
+    }
+    r.mean = sum / seeds;
+    r.std_error =
+        seeds > 1 ? std::sqrt(std::max(0.0, (sum2 - sum * r.mean) / (seeds - 1)) / seeds) : 0.0;
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+std::string to_csv(const std::vector<Row>& rows, uint32_t count, int seeds) {
+  const double random_rms = std::sqrt(sequence::expected_random_l2_star_squared(count));
+  std::string s = "sequence,count,seeds,mean_l2_star,std_error,min,max,random_rms\n";
+  for (const Row& r : rows)
+    s += r.name + "," + std::to_string(count) + "," + std::to_string(seeds) + "," + fmt17(r.mean) +
+         "," + fmt17(r.std_error) + "," + fmt17(r.min) + "," + fmt17(r.max) + "," +
+         fmt17(random_rms) + "\n";
+  return s;
+}
+
+std::string to_markdown(const std::vector<Row>& rows, uint32_t count, int seeds,
+                        uint64_t first_seed) {
+  const double random_rms = std::sqrt(sequence::expected_random_l2_star_squared(count));
+  char buf[256];
+  std::string s = "L2-star discrepancy (Warnock), N = " + std::to_string(count) + ", mean over " +
+                  std::to_string(seeds) + " seeds from " + std::to_string(first_seed) +
+                  "; random points have RMS sqrt(5/(36N)) = " + fmt17(random_rms) + ".\n\n";
+  s += "| sequence | mean D | std. error | min | max | mean / random RMS |\n";
+  s += "| --- | ---: | ---: | ---: | ---: | ---: |\n";
+  for (const Row& r : rows) {
+    std::snprintf(buf, sizeof buf, "| %s | %.4e | %.1e | %.4e | %.4e | %.3f |\n", r.name.c_str(),
+                  r.mean, r.std_error, r.min, r.max, r.mean / random_rms);
+    s += buf;
+  }
+  return s;
+}
+
+std::string to_json(const std::vector<Row>& rows, uint32_t count, int seeds, uint64_t first_seed) {
+  nlohmann::json j;
+  j["count"] = count;
+  j["seeds"] = seeds;
+  j["first_seed"] = first_seed;
+  j["random_rms"] = std::sqrt(sequence::expected_random_l2_star_squared(count));
+  j["sequences"] = nlohmann::json::array();
+  for (const Row& r : rows)
+    j["sequences"].push_back({{"name", r.name},
+                              {"mean_l2_star", r.mean},
+                              {"std_error", r.std_error},
+                              {"min", r.min},
+                              {"max", r.max}});
+  // nlohmann prints the shortest decimal form that reads back to the same double.
+  return j.dump(2) + "\n";
+}
+
+int run_sequences(SequencesState s) {
+  s.seed = parse_seed(s.seed_text);
+  if (s.count <= 0 || s.count > kMaxCount)
+    throw UsageError("--count: " + std::to_string(s.count) + " must be in [1, " +
+                     std::to_string(kMaxCount) + "] (the discrepancy costs N^2)");
+  if (s.seeds <= 0 || s.seeds > kMaxSeeds)
+    throw UsageError("--seeds: " + std::to_string(s.seeds) + " must be in [1, " +
+                     std::to_string(kMaxSeeds) + "]");
+  require_one_of(s.format, {"md", "csv", "json"}, "--format");
+  const std::vector<std::string> names = selected_names(s.only);
+  if (!s.out.empty()) check_out_path(s.out);
+  const auto count = static_cast<uint32_t>(s.count);
+  const int seeds = static_cast<int>(s.seeds);
+  const std::vector<Row> rows = compute(names, count, seeds, s.seed);
+  const std::string text = s.format == "csv"    ? to_csv(rows, count, seeds)
+                           : s.format == "json" ? to_json(rows, count, seeds, s.seed)
+                                                : to_markdown(rows, count, seeds, s.seed);
+  if (s.out.empty())
+    std::fwrite(text.data(), 1, text.size(), stdout);
+  else
+    write_file_atomic(s.out, text);
+  return 0;
+}
+
+// The first kFigurePoints points of every sequence (seed 1) as one CSV, drawn as a grid.
+void write_figure(const fs::path& png, uint64_t seed) {
+  const fs::path csv =
+      fs::temp_directory_path() / ("disklab-sequences-" + std::to_string(::getpid()) + ".csv");
+  struct Cleanup {
+    fs::path file;
+    ~Cleanup() {
+      std::error_code ec;
+      fs::remove(file, ec);
+    }
+  } cleanup{csv};
+  {
+    std::ofstream f(csv);
+    f << "sequence,index,u,v\n";
+    for (const std::string& name : sequence::sequence_names()) {
+      const auto seq = sequence::make_sequence(name, seed, kFigurePoints);
+      for (uint32_t i = 0; i < kFigurePoints; ++i) {
+        const Point2 p = seq->at(i);
+        f << name << ',' << i << ',' << fmt17(p.x) << ',' << fmt17(p.y) << '\n';
+      }
+    }
+    if (!f) throw std::runtime_error("cannot write temporary " + csv.string());
+  }
+  run_plot("sequences",
+           {"--csv", csv.string(), "--title",
+            "First " + std::to_string(kFigurePoints) + " points, seed " + std::to_string(seed)},
+           png);
+}
+
+int report_sequences(const ReportOptions& options) {
+  const uint32_t count = options.quick ? 256 : 4096;
+  const int seeds = options.quick ? 4 : 16;
+  const std::vector<Row> rows = compute(sequence::sequence_names(), count, seeds, 1);
+  write_file_atomic(options.dir / "sequences_discrepancy.csv", to_csv(rows, count, seeds));
+  write_file_atomic(options.dir / "sequences_discrepancy.md", to_markdown(rows, count, seeds, 1));
+  write_figure(options.dir / "sequences_first500.png", 1);
+  return 0;
+}
+
+std::function<int()> setup_sequences(CLI::App& sub) {
+  auto state = std::make_shared<SequencesState>();
+  std::string names;
+  for (const auto& n : sequence::sequence_names())
+    names += " " + n;
+  sub.add_option("--count", state->count, "Number of points N (1 .. 65536; cost ~N^2)")
+      ->capture_default_str();
+  sub.add_option("--seeds", state->seeds, "Number of seeds averaged (1 .. 1000)")
+      ->capture_default_str();
+  sub.add_option("--seed", state->seed_text, "First seed (unsigned 64-bit)")->capture_default_str();
+  sub.add_option("--sequences", state->only, "Comma-separated subset (default all):" + names);
+  sub.add_option("--format", state->format, "md, csv or json")->capture_default_str();
+  sub.add_option("--out", state->out, "Output file (default: stdout)");
+  sub.footer(
+      "L2-star discrepancy by Warnock's formula of the first N points, mean over seeds\n"
+      "seed .. seed+K-1, with standard error, min and max; random points have expected\n"
+      "D^2 = 5/(36N) exactly, printed as random_rms for comparison.\n"
+      "Examples:\n"
+      "  disklab sequences --count 1024\n"
+      "  disklab sequences --count 4096 --seeds 16 --format csv --out disc.csv\n"
+      "  disklab sequences --count 256 --sequences sobol-owen,pmj02 --format json");
+  return [state] { return run_sequences(*state); };
+}
+
+const Registrar kSequences{Command{"sequences", "L2-star discrepancy table of the square sequences",
+                                   setup_sequences, report_sequences}};
+
+}  // namespace
+}  // namespace disklab::cli
