@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -56,40 +57,40 @@ struct Row {
   double weight;
 };
 
-struct Generated {
-  std::vector<Row> rows;
-  uint32_t square_points = 0;  // square points consumed
-  bool mapped = false;         // rows carry x, y, weight
-};
-
-Generated generate(const PointsState& s, const sequence::Sequence& seq) {
-  Generated g;
+// Streams the rows of `s` into `emit(const Row&)` without storing them (a CSV of millions of
+// points needs no more memory than one row). Returns the square points consumed.
+template <class Emit>
+uint32_t for_each_row(const PointsState& s, const sequence::Sequence& seq, Emit&& emit) {
   const auto n = static_cast<uint32_t>(s.count);
-  g.rows.reserve(n);
   if (s.strategy.empty()) {
     for (uint32_t i = 0; i < n; ++i)
-      g.rows.push_back({i, seq.at(i), {}, 1.0});
-    g.square_points = n;
-    return g;
+      emit(Row{i, seq.at(i), {}, 1.0});
+    return n;
   }
-  g.mapped = true;
   disk::DiskSampler<sequence::Sequence> sampler(*disk::parse_strategy(s.strategy), seq);
   for (uint32_t i = 0; i < n; ++i) {
     const disk::DiskSample d = sampler.next();
-    g.rows.push_back({i, d.uv, d.point, d.weight});
+    emit(Row{i, d.uv, d.point, d.weight});
   }
-  g.square_points = sampler.cursor();
-  return g;
+  return sampler.cursor();
 }
 
-std::string to_csv(const Generated& g) {
-  std::string csv = g.mapped ? "index,u,v,x,y,weight\n" : "index,u,v\n";
-  for (const Row& r : g.rows) {
-    csv += std::to_string(r.index) + "," + fmt17(r.uv.x) + "," + fmt17(r.uv.y);
-    if (g.mapped) csv += "," + fmt17(r.xy.x) + "," + fmt17(r.xy.y) + "," + fmt17(r.weight);
-    csv += "\n";
-  }
-  return csv;
+// Writes the CSV to `out` in chunks; returns the square points consumed.
+uint32_t write_csv(const PointsState& s, const sequence::Sequence& seq, std::ostream& out) {
+  const bool mapped = !s.strategy.empty();
+  std::string buf = mapped ? "index,u,v,x,y,weight\n" : "index,u,v\n";
+  const uint32_t used = for_each_row(s, seq, [&](const Row& r) {
+    buf += std::to_string(r.index) + "," + fmt17(r.uv.x) + "," + fmt17(r.uv.y);
+    if (mapped) buf += "," + fmt17(r.xy.x) + "," + fmt17(r.xy.y) + "," + fmt17(r.weight);
+    buf += "\n";
+    if (buf.size() > (1u << 16)) {
+      out << buf;
+      buf.clear();
+    }
+  });
+  out << buf;
+  out.flush();
+  return used;
 }
 
 // Images of the grid lines u = i/n and v = j/n under the strategy (polylines "line,x,y"), when
@@ -149,16 +150,17 @@ void check_out_path(const std::string& out) {
     throw UsageError("--out: folder '" + dir.string() + "' is not writable");
 }
 
-std::string plot_title(const PointsState& s, const Generated& g) {
+std::string plot_title(const PointsState& s, uint32_t square_points) {
   std::string t = s.strategy.empty() ? "square" : s.strategy;
-  t += ": " + std::to_string(g.rows.size()) + " points, " + s.sequence + " seed " +
-       std::to_string(s.seed);
-  if (!s.strategy.empty() && g.square_points != g.rows.size())
-    t += " (" + std::to_string(g.square_points) + " square points)";
+  t +=
+      ": " + std::to_string(s.count) + " points, " + s.sequence + " seed " + std::to_string(s.seed);
+  if (!s.strategy.empty() && int64_t(square_points) != s.count)
+    t += " (" + std::to_string(square_points) + " square points)";
   return t;
 }
 
-void write_png(const PointsState& s, const Generated& g, const fs::path& png) {
+// Returns the square points consumed.
+uint32_t write_png(const PointsState& s, const sequence::Sequence& seq, const fs::path& png) {
   // The plot script reads the rows from a temporary CSV (removed whatever happens).
   const fs::path tmp = fs::temp_directory_path();
   const std::string tag = std::to_string(::getpid());
@@ -172,18 +174,19 @@ void write_png(const PointsState& s, const Generated& g, const fs::path& png) {
         fs::remove(f, ec);
     }
   } cleanup{{csv, lines}};
+  uint32_t square_points = 0;
   {
     std::ofstream f(csv);
-    f << to_csv(g);
+    square_points = write_csv(s, seq, f);
     if (!f) throw std::runtime_error("cannot write temporary " + csv.string());
   }
-  std::vector<std::string> args = {"--csv", csv.string(), "--title", plot_title(s, g)};
-  if (g.mapped) {
+  std::vector<std::string> args = {"--csv", csv.string(), "--title", plot_title(s, square_points)};
+  if (!s.strategy.empty()) {
     const disk::Strategy strategy = *disk::parse_strategy(s.strategy);
     args.insert(args.end(), {"--mode", "disk"});
     if (strategy == disk::Strategy::pad_zero || strategy == disk::Strategy::rejection)
       args.insert(args.end(), {"--square-outline"});
-    const std::string strata = strata_lines(strategy, g.square_points);
+    const std::string strata = strata_lines(strategy, square_points);
     if (!strata.empty()) {
       std::ofstream f(lines);
       f << strata;
@@ -193,6 +196,7 @@ void write_png(const PointsState& s, const Generated& g, const fs::path& png) {
     args.insert(args.end(), {"--mode", "square"});
   }
   run_plot("points", args, png);
+  return square_points;
 }
 
 uint64_t parse_seed(const std::string& text) {
@@ -221,18 +225,20 @@ void validate(PointsState& s) {
 // Writes the CSV or PNG for `s` to `out` (atomically), or the CSV to stdout when out is empty.
 void produce(const PointsState& s, const std::string& out) {
   const auto seq = sequence::make_sequence(s.sequence, s.seed);
-  const Generated g = generate(s, *seq);
-  if (s.strategy == "rejection" && std::getenv("DISKLAB_QUIET") == nullptr)
-    std::fprintf(stderr, "points: rejection used %u square points for %zu disk samples\n",
-                 g.square_points, g.rows.size());
+  uint32_t used = 0;
   if (s.format == "png") {
-    write_png(s, g, out);
+    used = write_png(s, *seq, out);
   } else if (out.empty()) {
-    const std::string csv = to_csv(g);
-    std::fwrite(csv.data(), 1, csv.size(), stdout);
+    used = write_csv(s, *seq, std::cout);
+    if (!std::cout) throw std::runtime_error("writing to stdout failed");
   } else {
-    write_file_atomic(out, to_csv(g));
+    AtomicFile file(out);
+    used = write_csv(s, *seq, file.stream());
+    file.commit();
   }
+  if (s.strategy == "rejection" && std::getenv("DISKLAB_QUIET") == nullptr)
+    std::fprintf(stderr, "points: rejection used %u square points for %lld disk samples\n", used,
+                 static_cast<long long>(s.count));
 }
 
 int run_points(PointsState s) {
