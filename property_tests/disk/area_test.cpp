@@ -103,8 +103,8 @@ TEST(StratumArea, ElementaryIntervalsOfEveryShape) {
           ASSERT_LE(a.error, kQuadratureMaxRel * expected)
               << mc.name << " k=" << k << " cell " << i << "," << j;
           ASSERT_LE(std::fabs(a.area - expected), kAreaRel * expected)
-              << mc.name << " k=" << k << " cell (" << i << ", " << j << ") of " << nu << "x"
-              << nv << ": area " << a.area << " expected " << expected;
+              << mc.name << " k=" << k << " cell (" << i << ", " << j << ") of " << nu << "x" << nv
+              << ": area " << a.area << " expected " << expected;
         }
       }
     }

@@ -5,6 +5,7 @@
 
 #include <boost/math/special_functions/bessel.hpp>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,7 @@ class Unbiased : public ::testing::TestWithParam<Strategy> {};
 
 TEST_P(Unbiased, MeanOverRandomizationsMatchesTheClosedForm) {
   const t::MeanEstimate m = t::mean_estimate(estimates(GetParam()));
+  std::printf("  %s: %s\n", std::string(strategy_name(GetParam())).c_str(), describe(m).c_str());
   EXPECT_LE(std::fabs(m.mean - exact_average()), z_bound() * m.std_error)
       << strategy_name(GetParam()) << ": " << describe(m);
 }

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <string>
 #include <vector>
@@ -98,6 +99,8 @@ TEST_P(Uniformity, ChiSquareAgainstExactBinAreas) {
   const std::vector<Binned> per_copy = bin_strategy(strategy);
   for (std::size_t k = 0; k < per_copy.size(); ++k) {
     const t::ChiSquareResult r = per_copy[k].test();
+    std::printf("  %s copy %zu: %s\n", std::string(strategy_name(strategy)).c_str(), k,
+                r.summary().c_str());
     EXPECT_GE(r.p_value, per_test_alpha())
         << std::string(strategy_name(strategy)) << " copy " << k << " (support: "
         << (per_copy[k].quadrant == kWholeDisk ? std::string("disk")
@@ -121,6 +124,7 @@ TEST(Uniformity, RejectsTheLinearRadiusNegativeControl) {
   for (uint32_t i = 0; i < kPoints; ++i)
     b.add(t::sample_polar_linear_radius_NOT_UNIFORM(seq.at(i)));
   const t::ChiSquareResult r = b.test();
+  std::printf("  linear-radius (negative control): %s\n", r.summary().c_str());
   EXPECT_LT(r.p_value, per_test_alpha()) << "linear-radius polar was accepted: " << r.summary();
 }
 

@@ -56,11 +56,19 @@ struct ParallelMap {
       const double deriv = k * cv * cv / (delta * (1.0 + bt2 * sv * sv));
       return std::pair<double, double>(parallel_half_sector_parametric(se, v) - target, deriv);
     };
-    // Far-field start: the slice fraction of a planar ellipse, (v + sin v cos v) / (pi/2),
-    // inverted by two fixed-point steps from v = f pi/2 (cheap, no elliptic integrals).
-    double v0 = f * math::kHalfPi;
-    for (int i = 0; i < 2; ++i)
-      v0 = std::clamp(f * math::kHalfPi - 0.5 * std::sin(2.0 * v0), 0.0, math::kHalfPi);
+    // Far-field start: for a small ellipse Omega_p^+ is proportional to the planar slice area,
+    // whose fraction is F(v) = (2v + sin 2v) / pi (dF/dv = 4 cos^2 v / pi). Starting from its
+    // end asymptotics (F ~ 4v/pi at 0, 1 - F ~ (4/(3 pi)) (pi/2 - v)^3 at the rim), four
+    // clamped Newton steps on that cheap function (no elliptic integrals) solve it to ~1 ulp.
+    double v0 = f > 0.5 ? math::kHalfPi - std::cbrt(0.75 * math::kPi * (1.0 - f))
+                        : 0.25 * math::kPi * f;
+    for (int i = 0; i < 4; ++i) {
+      const double cv = std::cos(v0);
+      const double d = 4.0 * cv * cv / math::kPi;
+      if (!(d > 0.0)) break;
+      v0 = std::clamp(v0 - ((2.0 * v0 + std::sin(2.0 * v0)) / math::kPi - f) / d, 0.0,
+                      math::kHalfPi);
+    }
     const math::RootResult r = math::safeguarded_newton(eval, 0.0, math::kHalfPi, v0,
                                                         kParallelNewtonTol * g.omega, 1e-17, 64);
     if (iterations) *iterations = r.iterations;
