@@ -1,0 +1,108 @@
+#pragma once
+// Every spherical-ellipse sampler behind one value type, chosen by its CLI name at run time (for
+// the `disklab` CLI and for renderers that read the map from a scene file).
+//
+// Names: area, gamito, parallel, radial, ld-radial, radial4, tabulated, radial-fast.
+//
+// Conventions (one per map family, stated once here):
+//  - sample(u) is a pure function of u for every map, so it can be inverted and stratified:
+//    gamito and tabulated run in PROPOSAL mode (one candidate per u; valid == accepted; pdf is
+//    the proposal's solid-angle density, so (1/N) sum_{accepted} f / pdf is unbiased with N
+//    counting every candidate, DESIGN.md Sec. 3 "Rejection must stay unbiased").
+//  - radial4 yields copies() == 4 directions per u (the ellipse's reflections, counter-clockwise
+//    from quadrant 0); sample(u) is copy 0 and sample_copies() gives all four, each with pdf
+//    1/Omega. Its inverse returns the u of which the direction is copy k (k = its quadrant).
+//  - pdf is always in the solid-angle measure; `valid == false` means "no sample" (degenerate
+//    geometry or a rejected candidate), never NaN.
+//  - invert(direction) takes any non-zero direction (it need not be unit) and returns nothing
+//    when the map has no inverse (gamito), the geometry is empty, or the direction misses the
+//    disk (see contains()).
+// Hot paths (sample, sample_copies, invert, contains) allocate nothing and throw nothing; make()
+// throws std::invalid_argument only for an unknown name (degenerate geometry gives !valid()).
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "disklab/ellipse/area.h"
+#include "disklab/ellipse/gamito.h"
+#include "disklab/ellipse/ld_radial.h"
+#include "disklab/ellipse/parallel.h"
+#include "disklab/ellipse/radial.h"
+#include "disklab/ellipse/radial4.h"
+#include "disklab/ellipse/radial_fast.h"
+#include "disklab/ellipse/sampler.h"
+#include "disklab/ellipse/tabulated.h"
+#include "disklab/types.h"
+
+namespace disklab::ellipse {
+
+enum class MapKind { area, gamito, parallel, radial, ld_radial, radial4, tabulated, radial_fast };
+
+// All names, in the order of MapKind.
+const std::vector<std::string>& map_names();
+// The kind of a name; nullopt when unknown.
+std::optional<MapKind> parse_map(std::string_view name);
+std::string_view map_name(MapKind kind);
+// Whether invert() exists for the kind (every map but gamito: its candidates come from a
+// rectangle sampler whose inverse this library does not provide).
+bool map_has_inverse(MapKind kind);
+// Whether the map is uniform in solid angle (pdf == 1/Omega for every valid sample).
+bool map_is_uniform(MapKind kind);
+// Directions per square point (4 for radial4, else 1).
+int map_copies(MapKind kind);
+
+// A direction within this relative slack of the rim counts as inside (contains()): directions
+// read back from %.17g text, or produced on the rim (eps2 = 1), lie within a few ulps of it.
+// The local-frame coordinates of a unit world direction carry an absolute error ~eps, i.e. a
+// relative error ~eps / b_t in the thin direction, which contains() adds to this slack.
+inline constexpr double kRimSlack = 1e-9;
+
+class AnyMap {
+ public:
+  using Variant = std::variant<AreaSampler, GamitoSampler, ParallelMap, RadialMap, LdRadialMap,
+                               Radial4Map, TabulatedMap, RadialFastMap>;
+
+  // Throws std::invalid_argument("unknown spherical-ellipse map 'x' (valid: ...)").
+  static AnyMap make(std::string_view name, const Vec3& center, const Vec3& normal, double radius,
+                     const Vec3& o);
+  static AnyMap make(MapKind kind, const Vec3& center, const Vec3& normal, double radius,
+                     const Vec3& o);
+
+  MapKind kind() const { return kind_; }
+  std::string_view name() const { return map_name(kind_); }
+  bool has_inverse() const { return map_has_inverse(kind_); }
+  int copies() const { return map_copies(kind_); }
+  // False when the point sees nothing (behind the one-sided disk, in its plane, zero radius,
+  // non-finite input): every sample is then "no sample".
+  bool valid() const { return !geometry().empty; }
+  // Solid angle of the disk seen from the point (0 when !valid()).
+  double omega() const { return valid() ? geometry().omega : 0.0; }
+  const MapGeometry& geometry() const;
+
+  // One sample (copy 0 for radial4; a single candidate for gamito and tabulated). `iterations`
+  // receives the Newton iterations of the maps that solve for a root (else it is set to 0).
+  EllipseSample sample(Point2 u, int* iterations = nullptr) const;
+  // All copies of u into out[0..copies()-1]; returns copies().
+  int sample_copies(Point2 u, std::array<EllipseSample, 4>& out, int* iterations = nullptr) const;
+
+  // Whether the ray from the point along `direction` (any length) meets the disk: inside the
+  // spherical ellipse, z_e > 0 and (x/a_t)^2 + (y/b_t)^2 <= z^2 (its gnomonic image is the
+  // tangent ellipse), with the slack kRimSlack + 16 eps / b_t.
+  bool contains(const Vec3& direction) const;
+  // Direction -> u (see the header comment for when it returns nothing).
+  std::optional<Point2> invert(const Vec3& direction) const;
+
+  // The concrete sampler, for what the common interface does not cover (e.g. gamito's
+  // loop-until-accepted sample(u, rng)).
+  const Variant& variant() const { return map_; }
+
+ private:
+  AnyMap(MapKind kind, Variant map) : kind_(kind), map_(std::move(map)) {}
+  MapKind kind_;
+  Variant map_;
+};
+
+}  // namespace disklab::ellipse

@@ -1,0 +1,146 @@
+// Run-time dispatch over the spherical-ellipse samplers (any_map.h).
+#include "disklab/ellipse/any_map.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <type_traits>
+
+namespace disklab::ellipse {
+namespace {
+
+template <class... F>
+struct Overloaded : F... {
+  using F::operator()...;
+};
+template <class... F>
+Overloaded(F...) -> Overloaded<F...>;
+
+}  // namespace
+
+const std::vector<std::string>& map_names() {
+  static const std::vector<std::string> names = {
+      "area", "gamito", "parallel", "radial", "ld-radial", "radial4", "tabulated", "radial-fast"};
+  return names;
+}
+
+std::optional<MapKind> parse_map(std::string_view name) {
+  const auto& names = map_names();
+  for (std::size_t i = 0; i < names.size(); ++i)
+    if (names[i] == name) return static_cast<MapKind>(i);
+  return std::nullopt;
+}
+
+std::string_view map_name(MapKind kind) {
+  return map_names()[static_cast<std::size_t>(kind)];
+}
+
+bool map_has_inverse(MapKind kind) {
+  return kind != MapKind::gamito;
+}
+
+bool map_is_uniform(MapKind kind) {
+  // area: density |o - x|^2 / (A cos); gamito, tabulated: proposal densities.
+  return kind != MapKind::area && kind != MapKind::gamito && kind != MapKind::tabulated;
+}
+
+int map_copies(MapKind kind) {
+  return kind == MapKind::radial4 ? 4 : 1;
+}
+
+AnyMap AnyMap::make(std::string_view name, const Vec3& center, const Vec3& normal, double radius,
+                    const Vec3& o) {
+  const auto kind = parse_map(name);
+  if (!kind) {
+    std::string valid;
+    for (const auto& n : map_names())
+      valid += (valid.empty() ? "" : ", ") + n;
+    throw std::invalid_argument("unknown spherical-ellipse map '" + std::string(name) +
+                                "' (valid: " + valid + ")");
+  }
+  return make(*kind, center, normal, radius, o);
+}
+
+AnyMap AnyMap::make(MapKind kind, const Vec3& c, const Vec3& n, double r, const Vec3& o) {
+  switch (kind) {
+    case MapKind::area:
+      return AnyMap(kind, AreaSampler::make(c, n, r, o));
+    case MapKind::gamito:
+      return AnyMap(kind, GamitoSampler::make(c, n, r, o));
+    case MapKind::parallel:
+      return AnyMap(kind, ParallelMap::make(c, n, r, o));
+    case MapKind::radial:
+      return AnyMap(kind, RadialMap::make(c, n, r, o));
+    case MapKind::ld_radial:
+      return AnyMap(kind, LdRadialMap::make(c, n, r, o));
+    case MapKind::radial4:
+      return AnyMap(kind, Radial4Map::make(c, n, r, o));
+    case MapKind::tabulated:
+      return AnyMap(kind, TabulatedMap::make(c, n, r, o));
+    case MapKind::radial_fast:
+      return AnyMap(kind, RadialFastMap::make(c, n, r, o));
+  }
+  throw std::invalid_argument("unknown spherical-ellipse map kind");
+}
+
+const MapGeometry& AnyMap::geometry() const {
+  return std::visit(Overloaded{
+                        [](const LdRadialMap& m) -> const MapGeometry& { return m.radial.g; },
+                        [](const Radial4Map& m) -> const MapGeometry& { return m.radial.g; },
+                        [](const RadialFastMap& m) -> const MapGeometry& { return m.radial.g; },
+                        [](const auto& m) -> const MapGeometry& { return m.g; },
+                    },
+                    map_);
+}
+
+EllipseSample AnyMap::sample(Point2 u, int* iterations) const {
+  if (iterations) *iterations = 0;
+  return std::visit(Overloaded{
+                        [&](const AreaSampler& m) { return m.sample(u); },
+                        [&](const GamitoSampler& m) { return m.propose(u); },
+                        [&](const TabulatedMap& m) { return m.sample(u); },
+                        [&](const Radial4Map& m) { return m.sample_quadrant(u, iterations); },
+                        [&](const auto& m) { return m.sample(u, iterations); },
+                    },
+                    map_);
+}
+
+int AnyMap::sample_copies(Point2 u, std::array<EllipseSample, 4>& out, int* iterations) const {
+  if (const auto* m = std::get_if<Radial4Map>(&map_)) {
+    if (iterations) *iterations = 0;
+    out = m->sample4(u, iterations);
+    return 4;
+  }
+  out[0] = sample(u, iterations);
+  return 1;
+}
+
+bool AnyMap::contains(const Vec3& direction) const {
+  const MapGeometry& g = geometry();
+  if (g.empty || !direction.allFinite()) return false;
+  const double len = direction.norm();
+  if (!(len > 0.0)) return false;
+  const Vec3 l = g.to_local(direction / len);
+  if (!(l.z() > 0.0)) return false;
+  const double slack =
+      1.0 + kRimSlack + 16.0 * std::numeric_limits<double>::epsilon() / std::min(g.b_t, g.a_t);
+  const double qx = l.x() / g.a_t, qy = l.y() / g.b_t;
+  return qx * qx + qy * qy <= l.z() * l.z() * slack * slack;
+}
+
+std::optional<Point2> AnyMap::invert(const Vec3& direction) const {
+  if (!has_inverse() || !contains(direction)) return std::nullopt;
+  const Vec3 d = direction.normalized();
+  const MapGeometry& g = geometry();
+  const Vec3 l = g.to_local(d);
+  const Point2 u = std::visit(Overloaded{
+                                  [&](const AreaSampler& m) { return m.invert(d); },
+                                  [&](const GamitoSampler&) { return Point2{}; },
+                                  [&](const auto& m) { return m.invert_local(l); },
+                              },
+                              map_);
+  if (!std::isfinite(u.x) || !std::isfinite(u.y)) return std::nullopt;
+  return u;
+}
+
+}  // namespace disklab::ellipse
