@@ -26,9 +26,117 @@ namespace disklab::ellipse {
 // to 2.5e-16 (eps1 = (k + t)/4), below the 1e-14 the maps promise.
 inline constexpr double kRadialNewtonTol = 1e-15;
 
+// Omega_r(s) as a short trigonometric series, built once per shading point (the hot path of the
+// exact maps; beyond the paper). In the parametric angle s the integrand of eq. (16) is
+//     dOmega_r/ds = a b / (1 + h_r(s)),  h_r^2 = A cos^2 s + B sin^2 s = p + q cos 2s,
+// A = cos^2 alpha <= B = cos^2 beta, p = (A + B)/2, q = -(a^2 - b^2)/2. As a function of
+// x = cos 2s it is analytic on [-1, 1] except for the branch point x* = -p/q = (A + B)/(a^2 - b^2)
+// > 1, so its Chebyshev coefficients a_k decay like rho^-k, rho = x* + sqrt(x*^2 - 1) (Bernstein
+// ellipse), and integrating term by term gives
+//     Omega_r(s) = a_0 s + sum_k a_k sin(2 k s) / (2 k),   Omega_r(pi/2) = a_0 pi / 2,
+// with every term O(ab): no cancellation at any distance. The degree N (8..64) is the smallest
+// with rho^-N <= 2^-60, so truncation and aliasing stay below ~1e-18 relative to a_0 (the
+// coefficients are sampled exactly by a DCT-I on N + 1 Chebyshev-Lobatto nodes). Near disks with
+// rho^-64 > 2^-60 (the point close to the disk's rim plane, h_r -> 0 somewhere) get n == 0 and
+// the maps fall back to the elliptic-integral form of solid_angle.h.
+struct RadialSeries {
+  static constexpr int kMaxDegree = 64;
+  int n = 0;                      // degree; 0: not available, use solid_angle.h
+  double a0 = 0.0;                // mean of the integrand (constant term)
+  double quadrant = 0.0;          // a_0 pi / 2
+  double b[kMaxDegree + 1] = {};  // b_k = a_k / (2k), k = 1..n
+
+  static RadialSeries make(const MapGeometry& g) {
+    RadialSeries out;
+    if (g.empty) return out;
+    const double A = g.cos2_alpha, B = g.cos2_beta;
+    const double diff = (g.a - g.b) * (g.a + g.b);  // B - A = a^2 - b^2, without cancellation
+    const double ab = g.a * g.b;
+    int n = 8;
+    if (diff > 0.0) {
+      // log rho = acosh(x*); N log rho >= 60 log 2.
+      const double xs = (A + B) / diff;
+      const double log_rho = std::acosh(std::max(1.0, xs));
+      const double need = 60.0 * 0.6931471805599453 / log_rho;
+      if (!(need <= kMaxDegree)) return out;
+      while (n < need)
+        n *= 2;
+    }
+    const auto& tab = tables();
+    const int step = kMaxDegree / n;  // table stride for this degree
+    double gj[kMaxDegree + 1];
+    for (int j = 0; j <= n; ++j) {
+      // Node x_j = cos(j pi / n) = cos 2 s_j, s_j = j pi / (2n): h_r^2 from positive terms.
+      const double c2 = tab.cos2_half[j * step], s2 = tab.sin2_half[j * step];
+      gj[j] = ab / (1.0 + std::sqrt(A * c2 + B * s2));
+    }
+    // DCT-I: a_k = (2/n) sum'' g_j cos(j k pi / n); a_0 and a_n halved once more.
+    double coef[kMaxDegree + 1];
+    for (int k = 0; k <= n; ++k) {
+      double sum = 0.5 * (gj[0] + ((k & 1) ? -gj[n] : gj[n]));
+      for (int j = 1; j < n; ++j)
+        sum += gj[j] * tab.cos_pi[((j * k) % (2 * n)) * step];
+      coef[k] = sum * (2.0 / n);
+    }
+    coef[0] *= 0.5;
+    coef[n] *= 0.5;
+    out.n = n;
+    out.a0 = coef[0];
+    for (int k = 1; k <= n; ++k)
+      out.b[k] = coef[k] / (2.0 * k);
+    out.quadrant = out.a0 * math::kHalfPi;
+    return out;
+  }
+
+  // Omega_r(s) from cos s and sin s (and s itself): Clenshaw's recurrence for the sine series in
+  // theta = 2s. Near theta = 0 or pi the recurrence's rounding is multiplied by sin(theta), as
+  // the sum itself, so the relative accuracy of a_0 s + sum holds there too.
+  double omega(double s, double cs, double ss) const {
+    const double cos2 = (cs - ss) * (cs + ss), sin2 = 2.0 * ss * cs;
+    const double two_c = 2.0 * cos2;
+    double y1 = 0.0, y2 = 0.0;
+    for (int k = n; k >= 1; --k) {
+      const double y = b[k] + two_c * y1 - y2;
+      y2 = y1;
+      y1 = y;
+    }
+    return a0 * s + y1 * sin2;
+  }
+
+ private:
+  struct Tables {
+    double cos_pi[2 * kMaxDegree];     // cos(m pi / 64), m = 0..127
+    double cos2_half[kMaxDegree + 1];  // cos^2(j pi / 128), j = 0..64
+    double sin2_half[kMaxDegree + 1];  // sin^2(j pi / 128)
+  };
+  static const Tables& tables() {
+    static const Tables t = [] {
+      Tables r;
+      for (int m = 0; m < 2 * kMaxDegree; ++m)
+        r.cos_pi[m] = std::cos(m * math::kPi / kMaxDegree);
+      for (int j = 0; j <= kMaxDegree; ++j) {
+        const double c = std::cos(j * math::kHalfPi / kMaxDegree);
+        const double sn = std::sin(j * math::kHalfPi / kMaxDegree);
+        r.cos2_half[j] = c * c;
+        r.sin2_half[j] = sn * sn;
+      }
+      return r;
+    }();
+    return t;
+  }
+};
+
 // Quadrant-local part of the radial map, shared by radial, ld-radial, radial4 and radial-fast.
 struct RadialQuadrant {
   const MapGeometry* g = nullptr;
+  const RadialSeries* series = nullptr;  // when set and available (n > 0): the fast Omega_r(s)
+
+  bool use_series() const { return series != nullptr && series->n > 0; }
+  double quadrant_solid_angle() const { return use_series() ? series->quadrant : g->quadrant; }
+  // Omega_r(s), by the series or by solid_angle.h; both agree to ~1e-16 relative.
+  double sector_s(double s) const {
+    return use_series() ? series->omega(s, std::cos(s), std::sin(s)) : g->radial_sector_s(s);
+  }
 
   // 1 - h_r and the planar radius^2 at parametric angle s.
   double one_minus_hr_s(double cs, double ss) const {
@@ -42,17 +150,20 @@ struct RadialQuadrant {
     if (iterations) *iterations = 0;
     if (!(t > 0.0)) return 0.0;
     if (!(t < 1.0)) return math::kHalfPi;
-    const double target = t * g->quadrant;
+    const double quadrant = quadrant_solid_angle();
+    const double target = t * quadrant;
     const double ab = g->a * g->b;
-    auto eval = [this, target, ab](double s) {
+    const RadialSeries* fast = use_series() ? series : nullptr;
+    auto eval = [this, fast, target, ab](double s) {
       const double cs = std::cos(s), ss = std::sin(s);
       const double one_minus_r2 = g->cos2_alpha * cs * cs + g->cos2_beta * ss * ss;
       const double deriv = ab / (1.0 + std::sqrt(std::max(0.0, one_minus_r2)));
-      return std::pair<double, double>(g->radial_sector_s(s) - target, deriv);
+      const double value = fast ? fast->omega(s, cs, ss) : g->radial_sector_s(s);
+      return std::pair<double, double>(value - target, deriv);
     };
     const double start = s0 >= 0.0 ? s0 : t * math::kHalfPi;
-    const math::RootResult root = math::safeguarded_newton(
-        eval, 0.0, math::kHalfPi, start, kRadialNewtonTol * g->quadrant, 1e-16, 64);
+    const math::RootResult root = math::safeguarded_newton(eval, 0.0, math::kHalfPi, start,
+                                                           kRadialNewtonTol * quadrant, 1e-16, 64);
     if (iterations) *iterations = root.iterations;
     return root.x;
   }
@@ -80,7 +191,7 @@ struct RadialQuadrant {
     const double ax = std::abs(x), ay = std::abs(y);
     // tan s = (a/b) tan phi = (a |y|) / (b |x|).
     const double s = std::atan2(g->a * ay, g->b * ax);
-    const double t = std::clamp(g->radial_sector_s(s) / g->quadrant, 0.0, 1.0);
+    const double t = std::clamp(sector_s(s) / quadrant_solid_angle(), 0.0, 1.0);
     const double cs = std::cos(s), ss = std::sin(s);
     const double rho2 = x * x + y * y;
     const double omh = rho2 / (1.0 + std::max(0.0, l.z()));  // 1 - h without cancellation
@@ -115,16 +226,18 @@ inline double join_quadrant(int k, double t_folded) {
 
 struct RadialMap {
   MapGeometry g;
+  RadialSeries series;  // Omega_r(s) for the root solves (falls back to solid_angle.h if n == 0)
   double pdf = 0.0;
 
   static RadialMap make(const Vec3& center, const Vec3& normal, double radius, const Vec3& o) {
     RadialMap m;
     m.g = MapGeometry::make(center, normal, radius, o);
     m.pdf = m.g.empty ? 0.0 : 1.0 / m.g.omega;
+    m.series = RadialSeries::make(m.g);
     return m;
   }
   bool valid() const { return !g.empty; }
-  RadialQuadrant quadrant() const { return RadialQuadrant{&g}; }
+  RadialQuadrant quadrant() const { return RadialQuadrant{&g, &series}; }
 
   EllipseSample sample(Point2 u, int* iterations = nullptr) const {
     if (g.empty) return {};
