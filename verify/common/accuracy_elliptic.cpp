@@ -84,7 +84,10 @@ using Eval = std::function<double(const Row&)>;
 Stats measure(const std::vector<Row>& rows, const std::string& function,
               const std::string& implementation, const std::string& subset, const Eval& eval,
               bool exact_k_only) {
-  Stats s{function, implementation, subset};
+  Stats s;
+  s.function = function;
+  s.implementation = implementation;
+  s.subset = subset;
   for (const Row& r : rows) {
     const double k = std::sqrt(r.m);
     if (exact_k_only && k * k != r.m) continue;
@@ -124,8 +127,7 @@ std::filesystem::path default_reference_dir() {
   return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "reference";
 }
 
-std::string write_elliptic_accuracy(const std::filesystem::path& dir,
-                                    const std::filesystem::path& reference_dir) {
+EllipticAccuracy elliptic_accuracy(const std::filesystem::path& reference_dir) {
   const auto f_rows = read_table(reference_dir / "elliptic_f.csv", false);
   const auto pi_rows = read_table(reference_dir / "elliptic_pi.csv", true);
 
@@ -186,8 +188,7 @@ std::string write_elliptic_accuracy(const std::filesystem::path& dir,
        << g17(s.worst.m) << " |\n";
   }
   md << "\nReproduce: `disklab accuracy --out DIR` (CSV: `DIR/elliptic_accuracy.csv`).\n";
-  write_file_atomic(dir / "elliptic_accuracy.csv", csv.str());
-  return md.str();
+  return {md.str(), csv.str()};
 }
 
 }  // namespace disklab::cli

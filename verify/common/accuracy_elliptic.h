@@ -11,12 +11,15 @@ namespace disklab::cli {
 // source tree's reference/ (known at build time).
 std::filesystem::path default_reference_dir();
 
-// Evaluates every implementation on every row of the tables in `reference_dir`, writes
-// `dir`/elliptic_accuracy.csv (one row per function x implementation: rows, max ulp, RMS ulp,
-// worst input) atomically, and returns a Markdown section with the same table.
-// Throws std::runtime_error if a table is missing or malformed.
-std::string write_elliptic_accuracy(
-    const std::filesystem::path& dir,
+struct EllipticAccuracy {
+  std::string markdown;  // a Markdown section with the table
+  std::string csv;       // elliptic_accuracy.csv: one row per function x implementation x subset
+                         // (rows, failures, max ulp, RMS ulp, worst input)
+};
+
+// Evaluates every implementation on every row of the tables in `reference_dir` (nothing is
+// written). Throws std::runtime_error if a table is missing or malformed.
+EllipticAccuracy elliptic_accuracy(
     const std::filesystem::path& reference_dir = default_reference_dir());
 
 }  // namespace disklab::cli
