@@ -52,6 +52,11 @@ int produce(const fs::path* dir, bool quick) {
   const SolidAngleAccuracy sa = solid_angle_accuracy(ref);
   std::string md = header(quick) + ell.markdown + "\n" + sa.markdown;
   if (dir) {
+    // Created only now: a failure above (missing table) leaves no folder behind.
+    std::error_code ec;
+    fs::create_directories(*dir, ec);
+    if (ec)
+      throw UsageError("--out: cannot create folder '" + dir->string() + "': " + ec.message());
     write_file_atomic(*dir / "elliptic_accuracy.csv", ell.csv);
     write_file_atomic(*dir / "solid_angle_accuracy.csv", sa.decades_csv);
     write_file_atomic(*dir / "solid_angle_accuracy_rows.csv", sa.rows_csv);
@@ -89,8 +94,6 @@ int run_accuracy(const AccuracyState& s) {
   std::error_code ec;
   if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
     throw UsageError("--out: '" + s.out + "' exists and is not a folder");
-  fs::create_directories(dir, ec);
-  if (ec) throw UsageError("--out: cannot create folder '" + s.out + "': " + ec.message());
   return produce(&dir, s.quick);
 }
 
