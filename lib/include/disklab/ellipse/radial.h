@@ -25,6 +25,9 @@ namespace disklab::ellipse {
 // Newton stops when |Omega_r(s) - t Omega_q| <= kRadialNewtonTol * Omega_q: eps1 is then exact
 // to 2.5e-16 (eps1 = (k + t)/4), below the 1e-14 the maps promise.
 inline constexpr double kRadialNewtonTol = 1e-15;
+// Evaluation cap of the root solves (as math::safeguarded_newton's): never reached in practice,
+// the bisection fallback halves the bracket each time.
+inline constexpr int kRadialMaxEvaluations = 64;
 
 // Omega_r(s) as a short trigonometric series, built once per shading point (the hot path of the
 // exact maps; beyond the paper). In the parametric angle s the integrand of eq. (16) is
@@ -168,11 +171,81 @@ struct RadialQuadrant {
     return root.x;
   }
 
+  // A solved parametric angle with its cosine and sine (local_point needs no second sincos).
+  struct Angle {
+    double s, cs, ss;
+  };
+
+  // solve_s with the series (when available) and a Newton loop that skips the confirming
+  // evaluation when it can prove it unnecessary: after a step delta from s the residual is
+  // Omega(s + delta) - target = (1/2) Omega''(xi) delta^2 exactly (Taylor; the linear part is
+  // what the step cancels), so M delta^2 <= tol, with M >= max |Omega''| on the step, bounds it
+  // by tol/2 without evaluating. Omega'' = -ab h_r' / (1 + h_r)^2, h_r' = (B - A) sin s cos s /
+  // h_r, and |sin|, |cos| grow by at most |delta| over the step while h_r >= cos(alpha): M below.
+  // Same bracket and bisection fallback as math::safeguarded_newton; `iterations` counts
+  // evaluations of Omega_r.
+  Angle solve(double t, int* iterations = nullptr, double s0 = -1.0) const {
+    if (!use_series()) {
+      const double s = solve_s(t, iterations, s0);
+      return {s, std::cos(s), std::sin(s)};
+    }
+    if (iterations) *iterations = 0;
+    if (!(t > 0.0)) return {0.0, 1.0, 0.0};
+    if (!(t < 1.0)) return {math::kHalfPi, std::cos(math::kHalfPi), 1.0};
+    const RadialSeries& S = *series;
+    const double target = t * S.quadrant, tol = kRadialNewtonTol * S.quadrant;
+    const double ab = g->a * g->b, A = g->cos2_alpha, B = g->cos2_beta;
+    const double diff = (g->a - g->b) * (g->a + g->b);  // B - A
+    const double h_min = g->cos_alpha;
+    const double curvature = ab * diff / (h_min * (1.0 + h_min) * (1.0 + h_min));
+    double lo = 0.0, hi = math::kHalfPi;
+    double s = (s0 >= 0.0 && s0 <= math::kHalfPi) ? s0 : t * math::kHalfPi;
+    double cs = std::cos(s), ss = std::sin(s);
+    for (int it = 1; it <= kRadialMaxEvaluations; ++it) {
+      const double h = std::sqrt(std::max(0.0, A * cs * cs + B * ss * ss));
+      const double d1 = ab / (1.0 + h);
+      const double value = S.omega(s, cs, ss) - target;
+      if (iterations) *iterations = it;
+      if (!(std::abs(value) > tol)) return {s, cs, ss};
+      if (value < 0.0)
+        lo = s;
+      else
+        hi = s;
+      const double delta = -value / d1;
+      const double next = s + delta;
+      if (next > lo && next < hi) {
+        const double ad = std::abs(delta);
+        const double M = curvature * (std::abs(ss) + ad) * (std::abs(cs) + ad);
+        if (M * delta * delta <= tol) {
+          // Converged without another evaluation. For |delta| <= 1e-6 the sine and cosine follow
+          // from those at s by Taylor to second order (the cubic term, < 2e-19, is below rounding).
+          if (ad <= 1e-6) {
+            const double q = 0.5 * delta * delta;
+            return {next, cs - ss * delta - cs * q, ss + cs * delta - ss * q};
+          }
+          return {next, std::cos(next), std::sin(next)};
+        }
+        s = next;
+      } else {
+        s = 0.5 * (lo + hi);
+      }
+      cs = std::cos(s);
+      ss = std::sin(s);
+      if (!(lo < hi) || std::nextafter(lo, hi) >= hi) break;
+    }
+    return {s, cs, ss};
+  }
+
   // Local-frame direction for quadrant k, parametric angle s and eps2 (eq. 22, reversed).
   Vec3 local_point(int k, double s, double eps2) const {
-    const double cs = std::cos(s), ss = std::sin(s);
+    return local_point(k, Angle{s, std::cos(s), std::sin(s)}, eps2);
+  }
+  Vec3 local_point(int k, const Angle& ang, double eps2) const {
+    const double cs = ang.cs, ss = ang.ss;
     const double px = g->a * cs, py = g->b * ss;
-    const double r = std::hypot(px, py);
+    // |(px, py)|: plain sqrt unless the squares could underflow (a < ~1e-145).
+    const double r2 = px * px + py * py;
+    const double r = r2 > 1e-290 ? std::sqrt(r2) : std::hypot(px, py);
     const double omh = eps2 * one_minus_hr_s(cs, ss);  // 1 - h
     const double h = 1.0 - omh;
     const double rho = std::sqrt(std::max(0.0, omh * (2.0 - omh)));  // sqrt(1 - h^2)
@@ -244,8 +317,8 @@ struct RadialMap {
     double t;
     const int k = split_quadrant(u.x, t);
     const RadialQuadrant q = quadrant();
-    const double s = q.solve_s(t, iterations);
-    return finish_sample(g, q.local_point(k, s, std::clamp(u.y, 0.0, 1.0)), pdf);
+    return finish_sample(g, q.local_point(k, q.solve(t, iterations), std::clamp(u.y, 0.0, 1.0)),
+                         pdf);
   }
 
   // Direction -> (eps1, eps2); no root finding (eq. 19 evaluated forwards).

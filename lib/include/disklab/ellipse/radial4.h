@@ -24,7 +24,7 @@ struct Radial4Map {
   EllipseSample sample_quadrant(Point2 u, int* iterations = nullptr) const {
     if (!radial.valid()) return {};
     const RadialQuadrant q = radial.quadrant();
-    const double s = q.solve_s(std::clamp(u.x, 0.0, 1.0), iterations);
+    const RadialQuadrant::Angle s = q.solve(std::clamp(u.x, 0.0, 1.0), iterations);
     return finish_sample(radial.g, q.local_point(0, s, std::clamp(u.y, 0.0, 1.0)), radial.pdf);
   }
 
