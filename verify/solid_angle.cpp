@@ -10,8 +10,11 @@
 //   on-axis     2 pi r^2 / (L (d + L)); only for points on the axis (in-plane offset at most
 //               1e-8 of the distance, where the closed form is exact to double precision)
 //   quadrature  boundary (wedge) quadrature, no ellipse formula (slow; the test reference)
-//   all         one line "method value" per method (on-axis only on axis)
-// --json prints every method plus the ellipse's a, b, alpha, beta, a_t, b_t, h, e.
+//   all         one line "method value" per method (on-axis only on axis; quadrature left out,
+//               with a note on stderr, where it does not converge)
+// --json prints every method (null where not applicable or not converged) plus the ellipse's
+// a, b, alpha, beta, a_t, b_t, h, e. --method quadrature near the rim, where it cannot converge,
+// exits 2 like on-axis off the axis: the chosen method cannot answer, use stable.
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -36,8 +39,11 @@ const std::vector<std::string> kMethods = {"stable",  "radial",     "parallel",
 // In-plane offset (relative to the distance) up to which a point counts as on the axis: the
 // closed form's error is O((e/D)^2) = 1e-16 there.
 constexpr double kOnAxisOffset = 1e-8;
-// Stopping tolerance of the double-precision boundary quadrature (relative change per level).
+// Stopping tolerance of the double-precision boundary quadrature (relative change per level), and
+// its interval budget: 2^26 (~3 s) suffices everywhere but within ~1e-8 radii of the rim, where
+// the integrand has a peak of width ~distance to the rim.
 constexpr double kQuadratureTol = 1e-15;
+constexpr int kQuadratureMaxLog2 = 26;
 
 struct SolidAngleState {
   std::string center, normal, radius, point;
@@ -50,6 +56,18 @@ bool on_axis(const ellipse::SphericalEllipse& se) {
   return se.empty || se.e <= kOnAxisOffset * std::hypot(se.h, se.e);
 }
 
+// Boundary quadrature in double; nullopt where it does not reach kQuadratureTol within
+// 2^kQuadratureMaxLog2 intervals (only points within ~1e-8 radii of the rim).
+std::optional<double> quadrature(const ellipse::SphericalEllipse& se) {
+  if (se.empty) return 0.0;
+  const auto q = ellipse::solid_angle_boundary_quadrature<double>(
+      se.h, se.e, se.radius, kQuadratureTol, kQuadratureMaxLog2);
+  if (!q.converged) return std::nullopt;
+  return q.value;
+}
+
+// The value of one method; nullopt for on-axis off the axis and a quadrature that did not
+// converge.
 std::optional<double> evaluate(const ellipse::SphericalEllipse& se, const std::string& method) {
   if (method == "stable") return se.omega;
   if (method == "radial") return ellipse::solid_angle_radial_printed(se);
@@ -58,15 +76,14 @@ std::optional<double> evaluate(const ellipse::SphericalEllipse& se, const std::s
     if (!on_axis(se)) return std::nullopt;
     return se.empty ? 0.0 : ellipse::solid_angle_on_axis(se.h, se.radius);
   }
-  if (method == "quadrature") {
-    if (se.empty) return 0.0;
-    const auto q =
-        ellipse::solid_angle_boundary_quadrature<double>(se.h, se.e, se.radius, kQuadratureTol, 26);
-    if (!q.converged)
-      throw std::runtime_error("quadrature did not converge (the point is very close to the rim)");
-    return q.value;
-  }
+  if (method == "quadrature") return quadrature(se);
   return std::nullopt;
+}
+
+std::string quadrature_failure(const ellipse::SphericalEllipse& se) {
+  return "quadrature: no convergence within 2^" + std::to_string(kQuadratureMaxLog2) +
+         " intervals (the point is within " +
+         fmt17(std::hypot(se.e - se.radius, se.h) / se.radius) + " radii of the rim)";
 }
 
 int run_solid_angle(const SolidAngleState& s) {
@@ -100,6 +117,7 @@ int run_solid_angle(const SolidAngleState& s) {
     for (const std::string m : {"stable", "radial", "parallel", "on-axis", "quadrature"}) {
       const auto v = evaluate(se, m);
       j["omega"][m] = v ? nlohmann::json(*v) : nlohmann::json(nullptr);
+      if (m == "quadrature") j["quadrature_converged"] = v.has_value();
     }
     j["omega"]["production"] = se.omega;
     j["a"] = se.a;
@@ -114,13 +132,21 @@ int run_solid_angle(const SolidAngleState& s) {
     return 0;
   }
   if (s.method == "all") {
+    std::string lines;  // all computed before anything is printed
+    bool quadrature_failed = false;
     for (const std::string m : {"stable", "radial", "parallel", "on-axis", "quadrature"}) {
       const auto v = evaluate(se, m);
-      if (v) std::printf("%s %s\n", m.c_str(), fmt17(*v).c_str());
+      if (v) lines += m + " " + fmt17(*v) + "\n";
+      if (!v && m == "quadrature") quadrature_failed = true;
     }
+    std::fputs(lines.c_str(), stdout);
+    if (quadrature_failed)
+      std::fprintf(stderr, "disklab: note: %s; left out\n", quadrature_failure(se).c_str());
     return 0;
   }
-  std::printf("%s\n", fmt17(*evaluate(se, s.method)).c_str());
+  const auto v = evaluate(se, s.method);  // on-axis off the axis was refused above
+  if (!v) throw UsageError("--method " + quadrature_failure(se) + "; use stable");
+  std::printf("%s\n", fmt17(*v).c_str());
   return 0;
 }
 
