@@ -33,6 +33,9 @@ struct MapGeometry {
   double a_t = 0.0, b_t = 0.0;     // tangent-ellipse semi-axes
   double cos2_alpha = 1.0, cos2_beta = 1.0;
   double cos_alpha = 1.0, cos_beta = 1.0;
+  // a^2 - b^2 = cos^2(beta) - cos^2(alpha) >= 0, from whichever form has the smaller rounding:
+  // (a - b)(a + b) for small ellipses, the difference of the complements near the hemisphere.
+  double a2_minus_b2 = 0.0;
   double quadrant = 0.0;  // Omega_r(pi/2), by the same function as Omega_r(phi)
   double omega = 0.0;     // solid angle of the disk (closed form, solid_angle.h)
   bool empty = true;
@@ -68,6 +71,8 @@ struct MapGeometry {
     g.cos2_beta = se.one_minus_b2;
     g.cos_alpha = std::sqrt(se.one_minus_a2);
     g.cos_beta = std::sqrt(se.one_minus_b2);
+    g.a2_minus_b2 = std::max(
+        0.0, g.a * g.a <= g.cos2_beta ? (g.a - g.b) * (g.a + g.b) : g.cos2_beta - g.cos2_alpha);
     g.quadrant = se.quadrant;
     g.omega = se.omega;
     g.empty = false;

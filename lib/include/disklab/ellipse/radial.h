@@ -44,6 +44,8 @@ inline constexpr int kRadialMaxEvaluations = 64;
 // the maps fall back to the elliptic-integral form of solid_angle.h.
 struct RadialSeries {
   static constexpr int kMaxDegree = 64;
+  // Relative size of the dropped tail: 1e-17, a tenth of the rounding of the sum itself.
+  static constexpr double kSeriesDrop = 1e-17;
   int n = 0;                      // degree; 0: not available, use solid_angle.h
   double a0 = 0.0;                // mean of the integrand (constant term)
   double quadrant = 0.0;          // a_0 pi / 2
@@ -53,7 +55,7 @@ struct RadialSeries {
     RadialSeries out;
     if (g.empty) return out;
     const double A = g.cos2_alpha, B = g.cos2_beta;
-    const double diff = (g.a - g.b) * (g.a + g.b);  // B - A = a^2 - b^2, without cancellation
+    const double diff = g.a2_minus_b2;  // B - A = a^2 - b^2
     const double ab = g.a * g.b;
     int n = 8;
     if (diff > 0.0) {
@@ -67,27 +69,41 @@ struct RadialSeries {
     }
     const auto& tab = tables();
     const int step = kMaxDegree / n;  // table stride for this degree
-    double gj[kMaxDegree + 1];
+    // The DCT runs on dg_j = g_j - g_0, formed without cancellation (h_0 = cos(alpha)):
+    //   g_j - g_0 = -a b (B - A) sin^2 s_j / ((h_0 + h_j)(1 + h_0)(1 + h_j)),
+    // so the coefficients k >= 1 (where the constant g_0 contributes exactly nothing) carry
+    // rounding relative to their own size, not to a b: for distant disks they are O(a^2 - b^2)
+    // and would otherwise drown in the rounding of g_j.
+    const double h0 = g.cos_alpha, g0 = ab / (1.0 + h0);
+    double dg[kMaxDegree + 1];
     for (int j = 0; j <= n; ++j) {
       // Node x_j = cos(j pi / n) = cos 2 s_j, s_j = j pi / (2n): h_r^2 from positive terms.
       const double c2 = tab.cos2_half[j * step], s2 = tab.sin2_half[j * step];
-      gj[j] = ab / (1.0 + std::sqrt(A * c2 + B * s2));
+      const double hj = std::sqrt(A * c2 + B * s2);
+      dg[j] = -ab * diff * s2 / ((h0 + hj) * (1.0 + h0) * (1.0 + hj));
     }
     // DCT-I: a_k = (2/n) sum'' g_j cos(j k pi / n); a_0 and a_n halved once more.
     double coef[kMaxDegree + 1];
     for (int k = 0; k <= n; ++k) {
-      double sum = 0.5 * (gj[0] + ((k & 1) ? -gj[n] : gj[n]));
+      double sum = 0.5 * (dg[0] + ((k & 1) ? -dg[n] : dg[n]));
       for (int j = 1; j < n; ++j)
-        sum += gj[j] * tab.cos_pi[((j * k) % (2 * n)) * step];
+        sum += dg[j] * tab.cos_pi[((j * k) % (2 * n)) * step];
       coef[k] = sum * (2.0 / n);
     }
-    coef[0] *= 0.5;
+    coef[0] = g0 + 0.5 * coef[0];
     coef[n] *= 0.5;
     out.n = n;
     out.a0 = coef[0];
     for (int k = 1; k <= n; ++k)
       out.b[k] = coef[k] / (2.0 * k);
     out.quadrant = out.a0 * math::kHalfPi;
+    // Drop the trailing terms whose sum stays below kSeriesDrop * quadrant (|sin| <= 1 bounds
+    // their contribution): N was sized for the worst decay, most ellipses need fewer terms.
+    double tail = 0.0;
+    while (out.n > 1 && tail + std::abs(out.b[out.n]) <= kSeriesDrop * out.quadrant) {
+      tail += std::abs(out.b[out.n]);
+      out.b[out.n--] = 0.0;
+    }
     return out;
   }
 
@@ -195,7 +211,7 @@ struct RadialQuadrant {
     const RadialSeries& S = *series;
     const double target = t * S.quadrant, tol = kRadialNewtonTol * S.quadrant;
     const double ab = g->a * g->b, A = g->cos2_alpha, B = g->cos2_beta;
-    const double diff = (g->a - g->b) * (g->a + g->b);  // B - A
+    const double diff = g->a2_minus_b2;  // B - A
     const double h_min = g->cos_alpha;
     const double curvature = ab * diff / (h_min * (1.0 + h_min) * (1.0 + h_min));
     double lo = 0.0, hi = math::kHalfPi;

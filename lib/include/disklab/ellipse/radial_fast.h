@@ -82,7 +82,7 @@ struct RadialFastMap {
     const MapGeometry& g = radial.g;
     const RadialQuadrant q = radial.quadrant();
     const double Q = radial.series.quadrant, ab = g.a * g.b;
-    const double A = g.cos2_alpha, B = g.cos2_beta, diff = (g.a - g.b) * (g.a + g.b);
+    const double A = g.cos2_alpha, B = g.cos2_beta, diff = g.a2_minus_b2;
     constexpr int M = kSeedIntervals;
     constexpr double H = 1.0 / M;
     double s[M + 1], d1[M + 1], d2[M + 1];
