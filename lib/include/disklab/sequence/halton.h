@@ -37,6 +37,47 @@ constexpr uint64_t radical_inverse3_fixed(uint32_t index) {
   return y;
 }
 
+// The same, four digits at a time: 81^g chunk g of the index holds digits 4g .. 4g+3, and
+// kRadical3Chunks[g][c] is their contribution. Six dependent divisions instead of 21 (about 4x
+// faster); digit 20 is the only one of chunk 5 (index / 3^20 < 3).
+inline constexpr int kHalton3Chunks = 6;
+inline constexpr uint32_t kHalton3ChunkBase = 81;  // 3^4
+using Halton3ChunkTable = std::array<std::array<uint64_t, kHalton3ChunkBase>, kHalton3Chunks>;
+// table[g][c] = sum over the digits d_j of c (j < 4, position k = 4g + j <= 20) of digit(k, d_j),
+// where digit(k, d) is what digit d at position k adds to Y.
+template <class DigitValue>
+constexpr Halton3ChunkTable make_halton3_chunks(DigitValue digit) {
+  Halton3ChunkTable t{};
+  for (int g = 0; g < kHalton3Chunks; ++g)
+    for (uint32_t c = 0; c < kHalton3ChunkBase; ++c) {
+      uint64_t sum = 0;
+      uint32_t rest = c;
+      for (int j = 0; j < 4; ++j) {
+        const int k = 4 * g + j;
+        if (k < kHalton3Digits) sum += digit(k, rest % 3u);
+        rest /= 3u;
+      }
+      t[g][c] = sum;
+    }
+  return t;
+}
+inline constexpr uint64_t halton3_weight(int k) {  // 3^(20-k)
+  uint64_t w = 1;
+  for (int j = k; j < kHalton3Digits - 1; ++j)
+    w *= 3;
+  return w;
+}
+inline constexpr Halton3ChunkTable kRadical3Chunks =
+    make_halton3_chunks([](int k, uint32_t d) { return d * halton3_weight(k); });
+inline uint64_t radical_inverse3_chunked(uint32_t index, const Halton3ChunkTable& t) {
+  uint64_t y = 0;
+  for (int g = 0; g < kHalton3Chunks; ++g) {
+    y += t[g][index % kHalton3ChunkBase];
+    index /= kHalton3ChunkBase;
+  }
+  return y;
+}
+
 // y = Y / 3^21 with Y < 3^21: the quotient is at most 1 - 3^-21 (about 1 - 1e-10), so rounding
 // the double product can never reach 1.0.
 constexpr double halton3_to_unit(uint64_t y) {
@@ -57,7 +98,7 @@ class HaltonRotated {
       : offset_x_(static_cast<uint32_t>(derive_seed(seed, 0x4a11))),
         offset_y_(derive_seed(seed, 0x4a12) % kHalton3Scale) {}
   HaltonFixed fixed_at(uint32_t index) const {
-    uint64_t y = radical_inverse3_fixed(index) + offset_y_;
+    uint64_t y = radical_inverse3_chunked(index, kRadical3Chunks) + offset_y_;
     if (y >= kHalton3Scale) y -= kHalton3Scale;
     return {rotate(reverse_bits(index), offset_x_), y};
   }
@@ -89,15 +130,11 @@ class HaltonScrambled {
       for (int d = 0; d < 3; ++d)
         table_[k][d] = perm_y_[k][d] * weight;
     }
+    chunks_ = make_halton3_chunks([this](int k, uint32_t d) { return table_[k][d]; });
   }
   HaltonFixed fixed_at(uint32_t index) const {
-    uint64_t y = 0;
-    uint32_t rest = index;
-    // All 21 positions, so leading zeros of the index are permuted too.
-    for (int k = 0; k < kHalton3Digits; ++k) {
-      y += table_[k][rest % 3u];
-      rest /= 3u;
-    }
+    // All 21 positions (chunks cover every one), so leading zeros of the index are permuted too.
+    const uint64_t y = radical_inverse3_chunked(index, chunks_);
     return {xor_scramble(reverse_bits(index), mask_x_), y};
   }
   Point2 at(uint32_t index) const { return to_point(fixed_at(index)); }
@@ -110,6 +147,7 @@ class HaltonScrambled {
   uint32_t mask_x_;
   std::array<std::array<uint8_t, 3>, kHalton3Digits> perm_y_{};
   std::array<std::array<uint64_t, 3>, kHalton3Digits> table_{};
+  Halton3ChunkTable chunks_{};  // table_ summed four digits at a time
 };
 
 }  // namespace disklab::sequence
