@@ -24,6 +24,32 @@ struct ParallelMap {
   MapGeometry g;
   double half = 0.0;  // Omega_p^+(beta), by the same function as Omega_p^+(phi_p)
   double pdf = 0.0;
+  // Omega_p^+(varphi) as a sine series (radial.h's RadialSeries, beyond the paper), used by the
+  // root solve and the inverse when available (series.n > 0; then series.quadrant replaces half).
+  // The integrand dOmega_p^+/dvarphi = 2 c_t b_t cos^2 v / (Delta (1 + b_t^2 sin^2 v)),
+  // Delta^2 = 1 - m sin^2 v, is a function of x = cos 2v with singularities at
+  // x = -(1 + 2 (1 - m)/m) (Delta = 0) and x = 1 + 2 / b_t^2: the nearer one sets the decay.
+  RadialSeries series;
+
+  static RadialSeries make_series(const SphericalEllipse& se) {
+    const double bt2 = se.b_t * se.b_t, k = 2.0 * se.c_t * se.b_t, om = se.one_minus_m;
+    const double rho_b = bt2 > 0.0 ? RadialSeries::acosh1p(2.0 / bt2) : HUGE_VAL;
+    const double rho_m = se.m > 0.0 ? RadialSeries::acosh1p(2.0 * om / se.m) : HUGE_VAL;
+    // F/k - 1 = c^2 / (Delta (1 + b_t^2 s^2)) - 1
+    //         = -s^2 [(Delta + 1 - m)/(1 + Delta) + Delta b_t^2] / (Delta (1 + b_t^2 s^2)),
+    // from 1 - Delta = m s^2 / (1 + Delta): positive terms only.
+    return RadialSeries::fit(std::min(rho_b, rho_m), k, [&](double c2, double s2) {
+      const double delta = std::sqrt(c2 + om * s2);
+      const double inner = (delta + om) / (1.0 + delta) + delta * bt2;
+      return -k * s2 * inner / (delta * (1.0 + bt2 * s2));
+    });
+  }
+  bool use_series() const { return series.n > 0; }
+  double half_total() const { return use_series() ? series.quadrant : half; }
+  // Omega_p^+(varphi) from v, cos v, sin v.
+  double half_sector(double v, double cv, double sv) const {
+    return use_series() ? series.omega(v, cv, sv) : parallel_half_sector_parametric(g.se, v);
+  }
 
   static ParallelMap make(const Vec3& center, const Vec3& normal, double radius, const Vec3& o) {
     ParallelMap m;
@@ -35,6 +61,7 @@ struct ParallelMap {
       return m;
     }
     m.pdf = 1.0 / m.g.omega;
+    m.series = make_series(m.g.se);
     return m;
   }
   bool valid() const { return !g.empty; }
@@ -48,20 +75,20 @@ struct ParallelMap {
     if (!(f > 0.0)) return 0.0;
     if (!(f < 1.0)) return math::kHalfPi;
     const SphericalEllipse& se = g.se;
-    const double target = f * half;
+    const double target = f * half_total();
     const double k = 2.0 * se.c_t * se.b_t, bt2 = se.b_t * se.b_t;
-    auto eval = [&se, target, k, bt2](double v) {
+    auto eval = [this, &se, target, k, bt2](double v) {
       const double sv = std::sin(v), cv = std::cos(v);
       const double delta = std::sqrt(cv * cv + se.one_minus_m * sv * sv);
       const double deriv = k * cv * cv / (delta * (1.0 + bt2 * sv * sv));
-      return std::pair<double, double>(parallel_half_sector_parametric(se, v) - target, deriv);
+      return std::pair<double, double>(half_sector(v, cv, sv) - target, deriv);
     };
     // Far-field start: for a small ellipse Omega_p^+ is proportional to the planar slice area,
     // whose fraction is F(v) = (2v + sin 2v) / pi (dF/dv = 4 cos^2 v / pi). Starting from its
     // end asymptotics (F ~ 4v/pi at 0, 1 - F ~ (4/(3 pi)) (pi/2 - v)^3 at the rim), four
     // clamped Newton steps on that cheap function (no elliptic integrals) solve it to ~1 ulp.
-    double v0 = f > 0.5 ? math::kHalfPi - std::cbrt(0.75 * math::kPi * (1.0 - f))
-                        : 0.25 * math::kPi * f;
+    double v0 =
+        f > 0.5 ? math::kHalfPi - std::cbrt(0.75 * math::kPi * (1.0 - f)) : 0.25 * math::kPi * f;
     for (int i = 0; i < 4; ++i) {
       const double cv = std::cos(v0);
       const double d = 4.0 * cv * cv / math::kPi;
@@ -95,7 +122,7 @@ struct ParallelMap {
     if (g.empty) return {};
     const double phi_p = std::atan2(l.y(), l.z());
     const double v = parallel_parametric_angle(g.se, std::min(std::abs(phi_p), g.beta));
-    const double f = std::clamp(parallel_half_sector_parametric(g.se, v) / half, 0.0, 1.0);
+    const double f = std::clamp(half_sector(v, std::cos(v), std::sin(v)) / half_total(), 0.0, 1.0);
     const double e1 = std::signbit(phi_p) ? 0.5 - 0.5 * f : 0.5 + 0.5 * f;
     const double hp = h_p_parametric(g.se, v);
     const double e2 = hp > 0.0 ? std::clamp(0.5 * (l.x() / hp + 1.0), 0.0, 1.0) : 0.5;

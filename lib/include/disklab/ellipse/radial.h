@@ -52,37 +52,46 @@ struct RadialSeries {
   double b[kMaxDegree + 1] = {};  // b_k = a_k / (2k), k = 1..n
 
   static RadialSeries make(const MapGeometry& g) {
-    RadialSeries out;
-    if (g.empty) return out;
+    if (g.empty) return {};
     const double A = g.cos2_alpha, B = g.cos2_beta;
     const double diff = g.a2_minus_b2;  // B - A = a^2 - b^2
     const double ab = g.a * g.b;
-    int n = 8;
-    if (diff > 0.0) {
-      // log rho = acosh(x*); N log rho >= 60 log 2.
-      const double xs = (A + B) / diff;
-      const double log_rho = std::acosh(std::max(1.0, xs));
-      const double need = 60.0 * 0.6931471805599453 / log_rho;
-      if (!(need <= kMaxDegree)) return out;
-      while (n < need)
-        n *= 2;
-    }
-    const auto& tab = tables();
-    const int step = kMaxDegree / n;  // table stride for this degree
+    // log rho = acosh(x*), x* - 1 = 2A / (B - A).
+    const double log_rho = diff > 0.0 ? acosh1p(2.0 * A / diff) : HUGE_VAL;
     // The DCT runs on dg_j = g_j - g_0, formed without cancellation (h_0 = cos(alpha)):
     //   g_j - g_0 = -a b (B - A) sin^2 s_j / ((h_0 + h_j)(1 + h_0)(1 + h_j)),
     // so the coefficients k >= 1 (where the constant g_0 contributes exactly nothing) carry
     // rounding relative to their own size, not to a b: for distant disks they are O(a^2 - b^2)
     // and would otherwise drown in the rounding of g_j.
     const double h0 = g.cos_alpha, g0 = ab / (1.0 + h0);
-    double dg[kMaxDegree + 1];
-    for (int j = 0; j <= n; ++j) {
-      // Node x_j = cos(j pi / n) = cos 2 s_j, s_j = j pi / (2n): h_r^2 from positive terms.
-      const double c2 = tab.cos2_half[j * step], s2 = tab.sin2_half[j * step];
+    return fit(log_rho, g0, [&](double c2, double s2) {
       const double hj = std::sqrt(A * c2 + B * s2);
-      dg[j] = -ab * diff * s2 / ((h0 + hj) * (1.0 + h0) * (1.0 + hj));
-    }
-    // DCT-I: a_k = (2/n) sum'' g_j cos(j k pi / n); a_0 and a_n halved once more.
+      return -ab * diff * s2 / ((h0 + hj) * (1.0 + h0) * (1.0 + hj));
+    });
+  }
+
+  // acosh(1 + e) for e >= 0 without cancellation.
+  static double acosh1p(double e) { return std::log1p(e + std::sqrt(e * (2.0 + e))); }
+
+  // The series of int_0^s G(cos 2s') ds' for an integrand whose Chebyshev coefficients decay at
+  // least like exp(-k log_rho): degree N (8..64) with N log_rho >= 60 log 2 (n = 0 if none
+  // suffices), coefficients by a DCT-I on N + 1 Chebyshev-Lobatto nodes s_j = j pi / (2N) of
+  // dg(cos^2 s_j, sin^2 s_j) = G_j - g0 (g0 = G at s = 0), trailing terms dropped.
+  template <class DG>
+  static RadialSeries fit(double log_rho, double g0, DG&& dg_at) {
+    RadialSeries out;
+    const double need = 60.0 * 0.6931471805599453 / log_rho;
+    if (!(need <= kMaxDegree) || !std::isfinite(g0)) return out;
+    int n = 8;
+    while (n < need)
+      n *= 2;
+    const auto& tab = tables();
+    const int step = kMaxDegree / n;  // table stride for this degree
+    double dg[kMaxDegree + 1];
+    for (int j = 0; j <= n; ++j)
+      dg[j] = dg_at(tab.cos2_half[j * step], tab.sin2_half[j * step]);
+    // DCT-I: a_k = (2/n) sum'' dg_j cos(j k pi / n); a_0 and a_n halved once more. For k >= 1
+    // the constant g0 contributes sum'' cos(j k pi / n) = 0.
     double coef[kMaxDegree + 1];
     for (int k = 0; k <= n; ++k) {
       double sum = 0.5 * (dg[0] + ((k & 1) ? -dg[n] : dg[n]));
@@ -104,6 +113,9 @@ struct RadialSeries {
       tail += std::abs(out.b[out.n]);
       out.b[out.n--] = 0.0;
     }
+    for (int k = 1; k <= out.n; ++k)
+      if (!std::isfinite(out.b[k])) return {};
+    if (!(out.quadrant > 0.0) || !std::isfinite(out.quadrant)) return {};
     return out;
   }
 
