@@ -73,6 +73,7 @@ struct Stats {
   std::string function, implementation, subset;
   std::size_t rows = 0, failures = 0;  // failures: exception or non-finite result
   uint64_t max_ulp = 0;
+  std::size_t over_target = 0;  // rows farther than kTargetUlp from the reference
   double sum2 = 0;
   Row worst;
   double worst_value = 0;
@@ -81,16 +82,17 @@ struct Stats {
 
 using Eval = std::function<double(const Row&)>;
 
+// The issue's accuracy target for F and Pi (max 2 ulp); rows beyond it are counted per
+// implementation so one pathological row does not stand for the whole table.
+constexpr uint64_t kTargetUlp = 2;
+
 Stats measure(const std::vector<Row>& rows, const std::string& function,
-              const std::string& implementation, const std::string& subset, const Eval& eval,
-              bool exact_k_only) {
+              const std::string& implementation, const std::string& subset, const Eval& eval) {
   Stats s;
   s.function = function;
   s.implementation = implementation;
   s.subset = subset;
   for (const Row& r : rows) {
-    const double k = std::sqrt(r.m);
-    if (exact_k_only && k * k != r.m) continue;
     ++s.rows;
     double v;
     try {
@@ -106,6 +108,7 @@ Stats measure(const std::vector<Row>& rows, const std::string& function,
     const int64_t d = ulp_distance(v, r.reference);
     const uint64_t a = d < 0 ? uint64_t(-(d + 1)) + 1 : uint64_t(d);
     s.sum2 += double(a) * double(a);
+    if (a > kTargetUlp) ++s.over_target;
     if (a > s.max_ulp || s.rows == 1) {
       if (a > s.max_ulp) s.max_ulp = a;
       s.worst = r;
@@ -149,43 +152,72 @@ EllipticAccuracy elliptic_accuracy(const std::filesystem::path& reference_dir) {
       {"boost default policy",
        [](const Row& r) { return boost::math::ellint_3(std::sqrt(r.m), r.n, r.phi); }},
   };
+  // Second subset: Boost against our value at Boost's own input m' = k^2 (k = sqrt(m) rounded),
+  // which takes the rounding of k out of Boost's error. k^2 is carried exactly as m_hi + m_lo
+  // (fma), and 1 - m' = (1 - m_hi) - m_lo is passed as the complement, so our value is ours at
+  // exactly m' (within our 2 ulp). Rows where k rounds to 1 (m' = 1, outside the domain) are left
+  // out.
+  auto at_boost_m = [](std::vector<Row> rows, bool pi) {
+    std::vector<Row> out;
+    for (Row r : rows) {
+      const double k = std::sqrt(r.m);
+      const double m_hi = k * k, m_lo = std::fma(k, k, -m_hi);
+      const double one_minus = (1.0 - m_hi) - m_lo;
+      if (!(one_minus > 0.0) || !(m_hi < 1.0)) continue;
+      r.reference = pi ? math::ellint_pi(r.n, 1.0 - r.n, r.phi, m_hi, one_minus)
+                       : math::ellint_f(r.phi, m_hi, one_minus);
+      out.push_back(r);
+    }
+    return out;
+  };
+  const auto f_at_k = at_boost_m(f_rows, false), pi_at_k = at_boost_m(pi_rows, true);
+  const std::string kSubsetAtK = "vs own at Boost's m = k^2";
   std::vector<Stats> all;
-  for (bool exact_k : {false, true}) {
-    const std::string subset = exact_k ? "rows with k*k == m" : "all rows";
-    for (const auto& [name, eval] : f_impls)
-      all.push_back(measure(f_rows, "F", name, subset, eval, exact_k));
-    for (const auto& [name, eval] : pi_impls)
-      all.push_back(measure(pi_rows, "Pi", name, subset, eval, exact_k));
-  }
+  for (const auto& [name, eval] : f_impls)
+    all.push_back(measure(f_rows, "F", name, "all rows", eval));
+  for (const auto& [name, eval] : pi_impls)
+    all.push_back(measure(pi_rows, "Pi", name, "all rows", eval));
+  for (std::size_t i = 1; i < f_impls.size(); ++i)
+    all.push_back(measure(f_at_k, "F", f_impls[i].first, kSubsetAtK, f_impls[i].second));
+  for (std::size_t i = 1; i < pi_impls.size(); ++i)
+    all.push_back(measure(pi_at_k, "Pi", pi_impls[i].first, kSubsetAtK, pi_impls[i].second));
 
   std::ostringstream csv;
   csv << "# Elliptic-integral accuracy against reference/elliptic_{f,pi}.csv (50-digit "
          "tanh-sinh).\n"
       << "# ulp = distance in doubles from the correctly rounded reference. Boost takes k = sqrt(m)"
-         " (rounded), which is part of its error; the 'k*k == m' subset removes that.\n"
-      << "function,implementation,subset,rows,failures,max_ulp,rms_ulp,worst_n,worst_phi,worst_m,"
+         " (rounded), which is part of its error near m = 1; the subset \"vs own at Boost's m = "
+         "k^2\" "
+         "compares Boost with our value (<= 2 ulp) at exactly m' = k^2, leaving Boost's own "
+         "algorithmic error.\n"
+      << "function,implementation,subset,rows,failures,max_ulp,rms_ulp,rows_over_2ulp,worst_n,"
+         "worst_phi,worst_m,"
          "worst_value,worst_reference\n";
   std::ostringstream md;
   md << "## Elliptic integrals: accuracy against the 50-digit tables\n\n"
      << "Distance in ulps from the correctly rounded reference (`reference/elliptic_f.csv`, "
      << "`reference/elliptic_pi.csv`: tanh-sinh quadrature in `cpp_bin_float_50`, independent of "
      << "Carlson). Boost.Math is called as `ellint_1(k, phi)` / `ellint_3(k, n, phi)` with "
-     << "`k = sqrt(m)` rounded to double, which is part of its error near m = 1; the second "
-     << "subset keeps only rows where `k*k == m` exactly. *double policy* = "
+     << "`k = sqrt(m)` rounded to double, which is part of its error near m = 1. The subset *vs "
+        "own at Boost's m = k^2* measures Boost "
+     << "against our value at exactly m' = k^2 (k^2 carried as a double-double, 1 - m' passed as "
+     << "the complement; ours is within 2 ulp of the truth there), so it shows Boost's own "
+     << "algorithmic error apart from the rounding of k; rows where k rounds to 1 are left out. "
+     << "*double policy* = "
      << "`promote_double<false>`; *default policy* computes in long double.\n\n"
-     << "| function | implementation | subset | rows | failures | max ulp | RMS ulp | worst input "
-        "(n, phi, m) |\n|---|---|---|---:|---:|---:|---:|---|\n";
+     << "| function | implementation | subset | rows | failures | max ulp | RMS ulp | rows > 2 ulp "
+        "| worst input (n, phi, m) |\n|---|---|---|---:|---:|---:|---:|---:|---|\n";
   for (const Stats& s : all) {
     csv << s.function << "," << s.implementation << "," << s.subset << "," << s.rows << ","
-        << s.failures << "," << s.max_ulp << "," << s.rms() << "," << g17(s.worst.n) << ","
-        << g17(s.worst.phi) << "," << g17(s.worst.m) << "," << g17(s.worst_value) << ","
-        << g17(s.worst.reference) << "\n";
+        << s.failures << "," << s.max_ulp << "," << s.rms() << "," << s.over_target << ","
+        << g17(s.worst.n) << "," << g17(s.worst.phi) << "," << g17(s.worst.m) << ","
+        << g17(s.worst_value) << "," << g17(s.worst.reference) << "\n";
     char rms[32];
     std::snprintf(rms, sizeof rms, "%.3g", s.rms());
     md << "| " << s.function << " | " << s.implementation << " | " << s.subset << " | " << s.rows
-       << " | " << s.failures << " | " << s.max_ulp << " | " << rms << " | "
-       << (s.function == "Pi" ? g17(s.worst.n) + ", " : std::string()) << g17(s.worst.phi) << ", "
-       << g17(s.worst.m) << " |\n";
+       << " | " << s.failures << " | " << s.max_ulp << " | " << rms << " | " << s.over_target
+       << " | " << (s.function == "Pi" ? g17(s.worst.n) + ", " : std::string()) << g17(s.worst.phi)
+       << ", " << g17(s.worst.m) << " |\n";
   }
   md << "\nReproduce: `disklab accuracy --out DIR` (CSV: `DIR/elliptic_accuracy.csv`).\n";
   return {md.str(), csv.str()};
