@@ -87,13 +87,16 @@ struct ParallelMap {
     // whose fraction is F(v) = (2v + sin 2v) / pi (dF/dv = 4 cos^2 v / pi). Starting from its
     // end asymptotics (F ~ 4v/pi at 0, 1 - F ~ (4/(3 pi)) (pi/2 - v)^3 at the rim), four
     // clamped Newton steps on that cheap function (no elliptic integrals) solve it to ~1 ulp.
+    // With the series, the model keeps its first harmonic instead, F(v) = (v + r sin 2v)/(pi/2),
+    // r = b_1/a_0 (= 1/2 in the far field), which is closer for near disks.
+    const double r1 = use_series() ? series.b[1] / series.a0 : 0.5;
     double v0 =
         f > 0.5 ? math::kHalfPi - std::cbrt(0.75 * math::kPi * (1.0 - f)) : 0.25 * math::kPi * f;
     for (int i = 0; i < 4; ++i) {
-      const double cv = std::cos(v0);
-      const double d = 4.0 * cv * cv / math::kPi;
+      const double c2v = std::cos(2.0 * v0);
+      const double d = (1.0 + 2.0 * r1 * c2v) / math::kHalfPi;
       if (!(d > 0.0)) break;
-      v0 = std::clamp(v0 - ((2.0 * v0 + std::sin(2.0 * v0)) / math::kPi - f) / d, 0.0,
+      v0 = std::clamp(v0 - ((v0 + r1 * std::sin(2.0 * v0)) / math::kHalfPi - f) / d, 0.0,
                       math::kHalfPi);
     }
     const math::RootResult r = math::safeguarded_newton(eval, 0.0, math::kHalfPi, v0,
