@@ -112,6 +112,7 @@ if ! $PY "$TMP/check_rows.py" "$TMP/records" $TOL_PRODUCTION $TOL_PRINTED_NEAR $
 fi
 
 # ---- every --method on one scene ----
+# shellcheck disable=SC2054  # the commas are inside the option values
 B=(--center 0,0,0 --normal 0,0,1 --radius 1)
 # On the axis at height 1: Omega = 2 pi (1 - 1/sqrt 2) = 1.8403023690212202 (to 17 digits).
 for m in stable radial parallel on-axis quadrature; do
