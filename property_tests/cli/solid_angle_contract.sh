@@ -66,7 +66,7 @@ lines = open(sys.argv[1]).read().splitlines()
 bad = []
 def rel(x, ref):  # exact relative error of a double against the 45-digit text
     return float(abs(Fraction(x) - Fraction(ref)) / Fraction(ref))
-keys = ["empty", "two_sided", "omega", "a", "b", "alpha", "beta", "a_t", "b_t", "h", "e"]
+keys = ["empty", "two_sided", "omega", "quadrature_converged", "a", "b", "alpha", "beta", "a_t", "b_t", "h", "e"]
 methods = ["stable", "radial", "parallel", "on-axis", "quadrature", "production"]
 for k in range(0, len(lines), 2):
     rid, cat, dist, ref, plain = lines[k].split(",")
@@ -76,6 +76,8 @@ for k in range(0, len(lines), 2):
     if missing:
         bad.append("%s: --json lacks %s" % (where, missing)); continue
     om = j["omega"]
+    if j["quadrature_converged"] is not True:  # every table row is >= 1e-6 radii from the rim
+        bad.append("%s: quadrature did not converge" % where)
     if plain != "%.17g" % float(plain):
         bad.append("%s: '%s' is not %%.17g" % (where, plain))
     if float(plain) != om["production"] or om["production"] != om["stable"]:
