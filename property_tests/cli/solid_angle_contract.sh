@@ -76,7 +76,7 @@ for k in range(0, len(lines), 2):
     if missing:
         bad.append("%s: --json lacks %s" % (where, missing)); continue
     om = j["omega"]
-    if j["quadrature_converged"] is not True:  # every table row is >= 1e-6 radii from the rim
+    if j["quadrature_converged"] is not True:  # table rows are >= 0.3 radii from the rim
         bad.append("%s: quadrature did not converge" % where)
     if plain != "%.17g" % float(plain):
         bad.append("%s: '%s' is not %%.17g" % (where, plain))
