@@ -15,6 +15,8 @@
 // log-uniform in [-1e6, -1) (the parallel map's n = -b_t^2 for far, grazing lights). Sets:
 //  - mixed: all three bands interleaved (branch patterns of a real caller);
 //  - n>0, -1<=n<0, n<-1: one band each (Pi only: its n < 0 path has an extra atan).
+// Pi/mixed/own-double-loop times our Pi with its duplication loop in double (see
+// pi_double_loop): what the 2-ulp accuracy costs in speed.
 // Boost takes the modulus k = sqrt(m); k is computed once, outside the timed loops.
 // R_F and R_J get the arguments Pi hands them: (c^2, 1 - m s^2, 1) and p = 1 - n s^2 (n > 0) or
 // 1 - N s^2 with N = (m - n)/(1 - n) (n < 0).
@@ -98,7 +100,28 @@ double seconds(Clock::time_point a, Clock::time_point b) {
 
 // The functions compared, one per (integral, implementation).
 enum class Fn { kF, kPi, kRF, kRJ };
-enum class Impl { kOwn, kBoostDouble, kBoostDefault };
+enum class Impl { kOwn, kBoostDouble, kBoostDefault, kOwnDoubleLoop };
+
+// Pi as elliptic.h computes it, but with the duplication loop in double instead of long double:
+// the speed side of the accuracy trade-off (not a library function: in double the loop's
+// rounding reaches 4-5 ulp on the 50-digit tables, above the 2-ulp promise).
+double pi_double_loop(double n, double phi, double m) {
+  namespace d = dm::detail;
+  const auto a = d::legendre_args<double, double>(phi, m, 1.0 - m);
+  if (a.s == 0) return phi;
+  const double s3 = a.s * a.s * a.s, one_minus_n = 1.0 - n;
+  const double N = (m - n) / one_minus_n;
+  double rf, rj;
+  if (n >= 0 || !(N > 0)) {
+    d::rf_rj_legendre<double>(a.c, a.c2, a.delta2, d::one_minus_n_s2(n, one_minus_n, a), rf, rj);
+    return a.s * rf + n / 3 * s3 * rj;
+  }
+  const double one_minus_N = (1.0 - m) / one_minus_n;
+  d::rf_rj_legendre<double>(a.c, a.c2, a.delta2, a.c2 + one_minus_N * a.s * a.s, rf, rj);
+  const double w = -n / one_minus_n, sw = std::sqrt(w), smn = std::sqrt(m - n);
+  return a.s * rf / one_minus_n + w * one_minus_N / 3 * s3 * rj +
+         (sw / smn) * std::atan(sw * smn * a.s * a.c / std::sqrt(a.delta2));
+}
 
 template <Fn fn, Impl impl>
 inline double eval(const Input& r) {
@@ -112,6 +135,7 @@ inline double eval(const Input& r) {
     if constexpr (impl == Impl::kBoostDouble)
       return boost::math::ellint_3(r.k, r.n, r.phi, boost_double_policy());
     if constexpr (impl == Impl::kBoostDefault) return boost::math::ellint_3(r.k, r.n, r.phi);
+    if constexpr (impl == Impl::kOwnDoubleLoop) return pi_double_loop(r.n, r.phi, r.m);
   } else if constexpr (fn == Fn::kRF) {
     if constexpr (impl == Impl::kOwn) return dm::carlson_rf(r.x, r.y, r.z);
     if constexpr (impl == Impl::kBoostDouble)
@@ -171,6 +195,10 @@ void register_fn(const char* fname, Band band, const char* bname) {
 void register_benchmarks() {
   register_fn<Fn::kF>("F", Band::kMixed, "mixed");
   register_fn<Fn::kPi>("Pi", Band::kMixed, "mixed");
+  benchmark::RegisterBenchmark("Pi/mixed/own-double-loop",
+                               BM_Elliptic<Fn::kPi, Impl::kOwnDoubleLoop>, Band::kMixed)
+      ->UseManualTime()
+      ->Unit(benchmark::kMicrosecond);
   register_fn<Fn::kPi>("Pi", Band::kPositive, "n>0");
   register_fn<Fn::kPi>("Pi", Band::kNegativeSmall, "-1<=n<0");
   register_fn<Fn::kPi>("Pi", Band::kNegativeLarge, "n<-1");

@@ -219,15 +219,17 @@ inline void rf_rj_loop(W x, W y, W z, W p, W& rf, W& rj) {
   rf_rj_loop<Real>(x, y, z, p, W(sqrt(x)), W(sqrt(z)), rf, rj);
 }
 
-// The Legendre forms' R_F(c^2, Delta^2, 1) [and R_J(.., p)]: sqrt(c^2) = c and sqrt(1) = 1 for
-// the first duplication step (c = cos phi >= 0 on [0, pi/2]).
+// The Legendre forms' R_F(c^2, Delta^2, 1) [and R_J(.., p)]: sqrt(c^2) = |c| and sqrt(1) = 1
+// for the first duplication step (|c|: a reduced phi can exceed pi/2 by a rounding).
 template <class Real, class W>
 inline W rf_legendre(W c, W c2, W delta2) {
-  return rf_loop<Real>(c2, delta2, W(1), c, W(1));
+  using std::abs;
+  return rf_loop<Real>(c2, delta2, W(1), W(abs(c)), W(1));
 }
 template <class Real, class W>
 inline void rf_rj_legendre(W c, W c2, W delta2, W p, W& rf, W& rj) {
-  rf_rj_loop<Real>(c2, delta2, W(1), p, c, W(1), rf, rj);
+  using std::abs;
+  rf_rj_loop<Real>(c2, delta2, W(1), p, W(abs(c)), W(1), rf, rj);
 }
 
 }  // namespace detail
