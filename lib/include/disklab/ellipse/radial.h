@@ -95,8 +95,18 @@ struct RadialSeries {
     double coef[kMaxDegree + 1];
     for (int k = 0; k <= n; ++k) {
       double sum = 0.5 * (dg[0] + ((k & 1) ? -dg[n] : dg[n]));
-      for (int j = 1; j < n; ++j)
-        sum += dg[j] * tab.cos_pi[((j * k) % (2 * n)) * step];
+      // cos(j k pi / n) from the table at index (j k mod 2n) * step, kept by increments (no
+      // integer division in the O(n^2) loop).
+      // Four partial sums: the loop is bound by the latency of the additions, not their count.
+      const int wrap = 2 * kMaxDegree, inc = (k * step) % wrap;
+      int idx = 0;
+      double part[4] = {0.0, 0.0, 0.0, 0.0};
+      for (int j = 1; j < n; ++j) {
+        idx += inc;
+        if (idx >= wrap) idx -= wrap;
+        part[j & 3] += dg[j] * tab.cos_pi[idx];
+      }
+      sum += (part[0] + part[1]) + (part[2] + part[3]);
       coef[k] = sum * (2.0 / n);
     }
     coef[0] = g0 + 0.5 * coef[0];
