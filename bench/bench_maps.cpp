@@ -411,10 +411,9 @@ class RatioReporter : public benchmark::ConsoleReporter {
     check("radial", kTargetRadial);
     check("radial-fast", kTargetRadialFast);
     check("tabulated", kTargetTabulated);
-    std::printf("Anchor (issue 5): the authors' Newton sample costs ~40-220x a polar disk sample;
-"
-                "compare the 'x polar' column of sample/radial, sample/parallel.
-");
+    std::printf(
+        "Anchor (issue 5): the authors' Newton sample costs ~40-220x a polar disk sample;\n"
+        "compare the 'x polar' column of sample/radial, sample/parallel.\n");
   }
 
  private:
