@@ -61,7 +61,7 @@ bool on_axis(const ellipse::SphericalEllipse& se) {
 std::optional<double> quadrature(const ellipse::SphericalEllipse& se) {
   if (se.empty) return 0.0;
   const auto q = ellipse::solid_angle_boundary_quadrature<double>(
-      se.h, se.e, se.radius, kQuadratureTol, kQuadratureMaxLog2);
+      se.h / se.radius, se.e / se.radius, 1.0, kQuadratureTol, kQuadratureMaxLog2);  // scale-free
   if (!q.converged) return std::nullopt;
   return q.value;
 }

@@ -280,5 +280,47 @@ RC_GTEST_PROP(GeometryInvariance, RigidMotionAndScaling, (uint64_t seed)) {
   RC_ASSERT(rel(c.b, a.b) <= kPowerOfTwoUlps * kEps);
 }
 
+// The same at the ends of the double range (lengths up to ~1e280 and down to ~1e-280): the shape
+// depends on h/r and e/r only, so no square may overflow or underflow on the way.
+RC_GTEST_PROP(GeometryInvariance, ExtremePowerOfTwoScales, (uint64_t seed)) {
+  const Scene s = random_scene(seed, -3.0, 6.0);
+  const SphericalEllipse a = make_spherical_ellipse(s.disk, s.point);
+  RC_PRE(!a.empty);
+  std::mt19937_64 rng(seed + 7);
+  const int exponent = std::uniform_int_distribution<int>(600, 900)(rng);
+  for (const double p2 : {std::exp2(exponent), std::exp2(-exponent)}) {
+    Disk scaled = s.disk;
+    scaled.center *= p2;
+    scaled.radius *= p2;
+    const SphericalEllipse c = make_spherical_ellipse(scaled, p2 * s.point);
+    RC_LOG() << s.describe() << " scale=2^" << std::log2(p2) << " omega " << a.omega << " -> "
+             << c.omega << "\n";
+    RC_ASSERT(!c.empty);
+    RC_ASSERT(rel(c.omega, a.omega) <= kPowerOfTwoUlps * kEps);
+    RC_ASSERT(rel(c.a, a.a) <= kPowerOfTwoUlps * kEps);
+    RC_ASSERT(rel(c.b, a.b) <= kPowerOfTwoUlps * kEps);
+  }
+}
+
+// Closer than 1e-150 radii under the disk, a_t ~ r/h overflows in a_t^2; the disk then covers the
+// hemisphere to double precision. On axis the closed form 2 pi r^2/(L (h + L)), L = hypot(h, r),
+// is the reference; off axis (e = r/2) Omega = 2 pi - O(h/r). Beyond the rim (e = 2r) Omega is
+// proportional to h up to O(h/r): it must keep its true tiny scale (a clamp of h would give the
+// ratio 1), so Omega(2h)/Omega(h) = 2; 1e-12 is far above rounding (a few ulps) and far below 1.
+TEST(GeometryDegenerate, TinyHeightsKeepTheirLimits) {
+  for (const double h : {1e-100, 1e-150, 1e-160, 1e-250, 1e-300}) {
+    const Disk disk{Vec3::Zero(), Vec3(0, 0, 1), 1.0, false};
+    const double on_axis = make_spherical_ellipse(disk, Vec3(0, 0, h)).omega;
+    EXPECT_NEAR(on_axis, ellipse::solid_angle_on_axis(h, 1.0), 2 * kEps * math::kTwoPi) << h;
+    const double inside = make_spherical_ellipse(disk, Vec3(0.5, 0, h)).omega;
+    EXPECT_NEAR(inside, math::kTwoPi, 2 * kEps * math::kTwoPi) << h;
+    EXPECT_LE(inside, math::kTwoPi) << h;
+    const double beyond = make_spherical_ellipse(disk, Vec3(2.0, 0, h)).omega;
+    const double beyond2 = make_spherical_ellipse(disk, Vec3(2.0, 0, 2 * h)).omega;
+    EXPECT_GT(beyond, 0.0) << h;
+    EXPECT_NEAR(beyond2 / beyond, 2.0, 1e-12) << h;
+  }
+}
+
 }  // namespace
 }  // namespace disklab::test

@@ -2,6 +2,7 @@
 // forms and solid_angle.h for the solid angle.
 #include "disklab/ellipse/geometry.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -46,6 +47,16 @@ void require_finite(const Vec3& v, const char* what) {
 
 EllipseShape ellipse_shape(double h, double e, double r) {
   EllipseShape s{};
+  // The shape depends on h/r and e/r only: work with r = 1 so that lengths near 1e+-200 cannot
+  // overflow or underflow in the squares below (a_t ~ r/h would otherwise lose the disk).
+  h /= r;
+  e /= r;
+  r = 1.0;
+  // Under the disk (e < r) and closer than 1e-150 radii, a_t ~ sqrt(r^2 - e^2)/h would overflow in
+  // a_t^2; Omega there equals 2 pi - O(h/r) = 2 pi in double, as it does at h = 1e-150 r.
+  // (For e >= r, a_t stays below ~sqrt(r/h) and Omega ~ h: no clamp, it keeps the true scale.)
+  constexpr double kMinUnderDiskHeight = 1e-150;
+  if (e < r && h < kMinUnderDiskHeight) h = kMinUnderDiskHeight;
   // Cone principal axes (geometry.h): Q = h^2 + e^2 - r^2, S = sqrt(Q^2 + 4 r^2 h^2), K = Q + S.
   const double two_rh = 2.0 * r * h;
   const double Q = std::fma(h, h, (e - r) * (e + r));
@@ -111,12 +122,16 @@ SphericalEllipse make_spherical_ellipse(const Disk& disk, const Vec3& o) {
     n = -n;
   }
   se.normal = n;
+  // c - o divided by its largest component: its norm's squares neither overflow nor underflow
+  // at lengths near 1e+-300 (e and the frame only need its direction and length).
   const Vec3 v = disk.center - o;
+  const double v_max = v.cwiseAbs().maxCoeff();  // > 0: h != 0
+  const Vec3 v_unit_max = v / v_max;
   const Vec3 zd = -n;
-  const double e = v.cross(n).norm();
+  const double e = v_unit_max.cross(n).norm() * v_max;
 
   // Eq. (3) with x and y swapped (DESIGN.md Sec. 3): x_d = normalize(z_d x (c - o)).
-  se.disk_frame = math::Frame::from_zx(zd, zd.cross(v));
+  se.disk_frame = math::Frame::from_zx(zd, zd.cross(v_unit_max));
   const EllipseShape s = ellipse_shape(h, e, disk.radius);
   if (!(s.a_t > 0.0) || !std::isfinite(s.a_t) || !(s.b_t > 0.0) || !std::isfinite(s.b_t))
     return se;  // under/overflow at absurd scales: nothing measurable
@@ -156,7 +171,9 @@ SphericalEllipse make_spherical_ellipse(const Disk& disk, const Vec3& o) {
   }
   se.empty = false;
   se.quadrant = radial_sector_parametric(se, math::kHalfPi);
-  se.omega = solid_angle_stable(se);
+  // A disk seen from one side never covers more than the hemisphere; rounding near it can
+  // exceed 2 pi by an ulp.
+  se.omega = std::min(solid_angle_stable(se), math::kTwoPi);
   if (!(se.omega > 0.0) || !std::isfinite(se.omega) || !(se.quadrant > 0.0)) {
     se.empty = true;
     se.omega = se.quadrant = 0.0;
