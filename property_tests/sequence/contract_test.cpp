@@ -177,5 +177,32 @@ TEST(Contract, RandomMatchesSequentialPcg32) {
   }
 }
 
+// advance(k) is the jump the table-driven at(i) must agree with for indices a sequential
+// stream cannot reach in a test: first prove advance(k) equals k draws (k < 2^17 covers the low
+// bits of every jump), then compare at(i) with advance(2i) on the high bytes and at 2^32 - 1.
+TEST(Contract, PcgAdvanceEqualsSequentialDraws) {
+  for (const uint64_t k : {0ull, 1ull, 2ull, 255ull, 256ull, 65535ull, 65536ull, 131071ull}) {
+    Pcg32 stepped(7), jumped(7);
+    for (uint64_t j = 0; j < k; ++j)
+      stepped.next_u32();
+    jumped.advance(k);
+    ASSERT_EQ(stepped.next_u32(), jumped.next_u32()) << "k=" << k;
+  }
+}
+
+TEST(Contract, RandomAtLargeIndicesMatchesAdvance) {
+  const RandomSequence seq(99);
+  std::vector<uint32_t> indices = {0xFFFFFFFFu, 0x80000000u, 0x00FF0000u, 0xFF000000u, 0x01000000u};
+  Pcg32 pick(5);
+  for (int k = 0; k < 200; ++k)
+    indices.push_back(pick.next_u32());
+  for (const uint32_t i : indices) {
+    Pcg32 rng(99);
+    rng.advance(2 * static_cast<uint64_t>(i));
+    const double u = rng.next_double(), v = rng.next_double();
+    ASSERT_EQ(seq.at(i), (Point2{u, v})) << "index " << i;
+  }
+}
+
 }  // namespace
 }  // namespace disklab::sequence
