@@ -9,32 +9,13 @@ DISKLAB=${1:?usage: accuracy_contract.sh <path-to-disklab>}
 DISKLAB=$(realpath "$DISKLAB")  # the stdout check runs from another folder
 PY=/usr/bin/python3
 [[ -x $PY ]] || PY=python3
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/contract_lib.bash"
 
 # TARGETS (one place): the issue's, checked on the CSVs the command writes.
 PRODUCTION_TARGET=1e-14  # relative error of the production solid angle, every configuration
 OWN_MAX_ULP=2            # own F and Pi against the 50-digit tables
 PRINTED_LOSS_AT_LEAST=1e-6  # worst error of eq. (19) as printed over 1e-6..1e8 radii: the
 # cancellation grows ~2 digits per decade, so far rows must show it (DESIGN.md Sec. 3)
-
-run() {  # run ARGS... -> OUT, ERR, RC
-  "$DISKLAB" "$@" >"$TMP/out" 2>"$TMP/err"
-  RC=$?
-  OUT=$(cat "$TMP/out")
-  ERR=$(cat "$TMP/err")
-}
-
-expect_usage_error() {  # ARGS...: exit 2, exactly one stderr line "disklab: error: ...", no stdout
-  run "$@"
-  local lines
-  lines=$(wc -l <"$TMP/err")
-  if [[ $RC -ne 2 ]]; then fail "'$*': exit $RC, expected 2 (stderr: $ERR)"; return; fi
-  if [[ $lines -ne 1 || $ERR != "disklab: error: "* ]]; then fail "'$*': stderr not one error line: $ERR"; fi
-  if [[ -n $OUT ]]; then fail "'$*': printed to stdout on error: $OUT"; fi
-}
 
 header_of() { grep -v '^#' "$1" | head -1; }
 

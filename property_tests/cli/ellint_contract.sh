@@ -8,10 +8,7 @@ DISKLAB=${1:?usage: ellint_contract.sh <path-to-disklab>}
 REF=${DISKLAB_REFERENCE_DIR:-$(cd "$(dirname "$0")/../../reference" && pwd)}
 PY=/usr/bin/python3
 [[ -x $PY ]] || PY=python3
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/contract_lib.bash"
 
 # TOLERANCES (one place). The issue's accuracy target for own F and Pi is 2 ulp against the
 # correctly rounded 50-digit reference (asserted on every row in property_tests/math); the CLI
@@ -24,22 +21,6 @@ BOOST_NEAR_ULP=8
 # Rows sampled from each table (every STRIDE-th): ~20 per function keeps the run ~1 s.
 F_STRIDE=67
 PI_STRIDE=107
-
-run() {  # run ARGS... -> OUT, ERR, RC
-  "$DISKLAB" "$@" >"$TMP/out" 2>"$TMP/err"
-  RC=$?
-  OUT=$(cat "$TMP/out")
-  ERR=$(cat "$TMP/err")
-}
-
-expect_usage_error() {  # ARGS...: exit 2, exactly one stderr line "disklab: error: ...", no stdout
-  run "$@"
-  local lines
-  lines=$(wc -l <"$TMP/err")
-  if [[ $RC -ne 2 ]]; then fail "'$*': exit $RC, expected 2 (stderr: $ERR)"; return; fi
-  if [[ $lines -ne 1 || $ERR != "disklab: error: "* ]]; then fail "'$*': stderr not one error line: $ERR"; fi
-  if [[ -n $OUT ]]; then fail "'$*': printed to stdout on error: $OUT"; fi
-}
 
 # ulp distance between two doubles given as text, and the %.17g round-trip check.
 cat >"$TMP/num.py" <<'PYEOF'

@@ -4,30 +4,11 @@
 # Usage: bash map_contract.sh <path-to-disklab>
 set -u
 DISKLAB=${1:?usage: map_contract.sh <path-to-disklab>}
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/contract_lib.bash"
 
 # Numbers must agree to 1e-15 absolute: the maps are accurate to a few ulps (see
 # property_tests/disk/maps_test.cpp); the CLI only formats them with %.17g.
 close() { awk -v a="$1" -v b="$2" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= 1e-15) }'; }
-
-run() {  # run ARGS... -> sets OUT, ERR, RC
-  "$DISKLAB" "$@" >"$TMP/out" 2>"$TMP/err"
-  RC=$?
-  OUT=$(cat "$TMP/out")
-  ERR=$(cat "$TMP/err")
-}
-
-expect_usage_error() {  # ARGS...: exit 2, exactly one stderr line "disklab: error: ...", no stdout
-  run "$@"
-  local lines
-  lines=$(wc -l <"$TMP/err")
-  if [[ $RC -ne 2 ]]; then fail "'$*': exit $RC, expected 2 (stderr: $ERR)"; return; fi
-  if [[ $lines -ne 1 || $ERR != "disklab: error: "* ]]; then fail "'$*': stderr not one error line: $ERR"; fi
-  if [[ -n $OUT ]]; then fail "'$*': printed to stdout on error: $OUT"; fi
-}
 
 expect_point() {  # "x y" line, expected x, expected y, label
   read -r x y extra <<<"$1"

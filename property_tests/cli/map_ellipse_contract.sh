@@ -6,10 +6,7 @@
 # Usage: bash map_ellipse_contract.sh <path-to-disklab>
 set -u
 DISKLAB=${1:?usage: map_ellipse_contract.sh <path-to-disklab>}
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/contract_lib.bash"
 
 # ---- tolerances (one place) ----
 # Round trip u -> direction -> u through %.17g text: the maps' own round trip is ~1e-13 or better
@@ -34,24 +31,6 @@ UNIFORM="parallel radial ld-radial radial4 radial-fast"
 # Not on a cell edge of the tabulated map (eps1 = j/1024): the proposal's height jumps there
 # (bound_j changes from cell to cell), so v is only defined up to which side rounding picks.
 UVS="0.3,0.7 0.9,0.1 0.55,0.999 0.1301,0.5 0.7,0.25 0.999,0.6"
-
-relclose() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { d = a - b; if (d < 0) d = -d; s = (b < 0 ? -b : b); if (s < 1) s = 1; exit !(d <= t * s) }'; }
-
-run() {  # run ARGS... -> sets OUT, ERR, RC
-  "$DISKLAB" "$@" >"$TMP/out" 2>"$TMP/err"
-  RC=$?
-  OUT=$(cat "$TMP/out")
-  ERR=$(cat "$TMP/err")
-}
-
-expect_usage_error() {  # ARGS...: exit 2, exactly one stderr line "disklab: error: ...", no stdout
-  run "$@"
-  local lines
-  lines=$(wc -l <"$TMP/err")
-  if [[ $RC -ne 2 ]]; then fail "'$*': exit $RC, expected 2 (stderr: $ERR)"; return; fi
-  if [[ $lines -ne 1 || $ERR != "disklab: error: "* ]]; then fail "'$*': stderr not one error line: $ERR"; fi
-  if [[ -n $OUT ]]; then fail "'$*': printed to stdout on error: $OUT"; fi
-}
 
 # ---- forward format, unit directions, pdfs, round trips ----
 for scene in "${SCENES[@]}"; do

@@ -5,25 +5,8 @@
 # Usage: bash points_contract.sh <path-to-disklab>
 set -u
 DISKLAB=${1:?usage: points_contract.sh <path-to-disklab>}
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/contract_lib.bash"
 export DISKLAB_QUIET=1
-
-run() {
-  "$DISKLAB" "$@" >"$TMP/out" 2>"$TMP/err"
-  RC=$?
-  ERR=$(cat "$TMP/err")
-}
-expect_usage_error() {
-  run "$@"
-  local lines
-  lines=$(wc -l <"$TMP/err")
-  if [[ $RC -ne 2 ]]; then fail "'$*': exit $RC, expected 2 (stderr: $ERR)"; return; fi
-  if [[ $lines -ne 1 || $ERR != "disklab: error: "* ]]; then fail "'$*': stderr not one error line: $ERR"; fi
-  if [[ -s $TMP/out ]]; then fail "'$*': printed to stdout on error"; fi
-}
 
 STRATEGIES="pad-zero rejection polar concentric polar4 concentric4"
 

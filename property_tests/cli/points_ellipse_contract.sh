@@ -6,10 +6,7 @@
 # Usage: bash points_ellipse_contract.sh <path-to-disklab>
 set -u
 DISKLAB=${1:?usage: points_ellipse_contract.sh <path-to-disklab>}
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/contract_lib.bash"
 export DISKLAB_QUIET=1
 
 # ---- tolerances and significance (one place) ----
@@ -27,24 +24,6 @@ Z_MEAN=5
 SCENE="--center 1,0.5,2 --normal 0.3,-0.2,-1 --radius 1 --point 0,0,0"
 MAPS="area gamito parallel radial ld-radial radial4 tabulated radial-fast"
 UNIFORM="parallel radial ld-radial radial4 radial-fast"
-
-relclose() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { d = a - b; if (d < 0) d = -d; s = (b < 0 ? -b : b); if (s < 1) s = 1; exit !(d <= t * s) }'; }
-
-run() {  # run ARGS... -> sets OUT, ERR, RC
-  "$DISKLAB" "$@" >"$TMP/out" 2>"$TMP/err"
-  RC=$?
-  OUT=$(cat "$TMP/out")
-  ERR=$(cat "$TMP/err")
-}
-
-expect_usage_error() {  # ARGS...: exit 2, exactly one stderr line "disklab: error: ...", no stdout
-  run "$@"
-  local lines
-  lines=$(wc -l <"$TMP/err")
-  if [[ $RC -ne 2 ]]; then fail "'$*': exit $RC, expected 2 (stderr: $ERR)"; return; fi
-  if [[ $lines -ne 1 || $ERR != "disklab: error: "* ]]; then fail "'$*': stderr not one error line: $ERR"; fi
-  if [[ -n $OUT ]]; then fail "'$*': printed to stdout on error: $OUT"; fi
-}
 
 # shellcheck disable=SC2086
 run solid-angle $SCENE

@@ -6,10 +6,7 @@
 # Usage: bash report_contract.sh <path-to-disklab>
 set -u
 DISKLAB=${1:?usage: report_contract.sh <path-to-disklab>}
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/contract_lib.bash"
 export DISKLAB_QUIET=1
 
 for round in 1 2; do

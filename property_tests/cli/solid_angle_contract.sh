@@ -9,10 +9,7 @@ DISKLAB=${1:?usage: solid_angle_contract.sh <path-to-disklab>}
 REF=${DISKLAB_REFERENCE_DIR:-$(cd "$(dirname "$0")/../../reference" && pwd)}
 PY=/usr/bin/python3
 [[ -x $PY ]] || PY=python3
-TMP=$(mktemp -d)
-trap 'rm -rf "$TMP"' EXIT
-failures=0
-fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+source "$(dirname "${BASH_SOURCE[0]}")/contract_lib.bash"
 
 # TOLERANCES (one place; relative errors against the 50-digit reference).
 # Production (stable) form, the on-axis closed form and the double boundary quadrature: the
@@ -24,22 +21,6 @@ TOL_PRINTED_NEAR=1e-13
 # ... and their loss far away must be visible: at >= 1e6 radii eq. (19) is off by more than 1e-6
 # (about two digits lost per decade; DESIGN.md Sec. 3).
 PRINTED_FAR_LOSS=1e-6
-
-run() {  # run ARGS... -> OUT, ERR, RC
-  "$DISKLAB" "$@" >"$TMP/out" 2>"$TMP/err"
-  RC=$?
-  OUT=$(cat "$TMP/out")
-  ERR=$(cat "$TMP/err")
-}
-
-expect_usage_error() {  # ARGS...: exit 2, exactly one stderr line "disklab: error: ...", no stdout
-  run "$@"
-  local lines
-  lines=$(wc -l <"$TMP/err")
-  if [[ $RC -ne 2 ]]; then fail "'$*': exit $RC, expected 2 (stderr: $ERR)"; return; fi
-  if [[ $lines -ne 1 || $ERR != "disklab: error: "* ]]; then fail "'$*': stderr not one error line: $ERR"; fi
-  if [[ -n $OUT ]]; then fail "'$*': printed to stdout on error: $OUT"; fi
-}
 
 # ---- every row of the reference table: plain output and --json ----
 # One record per row: the row, the plain output, then the --json output; checked by one
