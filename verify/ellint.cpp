@@ -23,6 +23,7 @@
 #include "common/output.h"
 #include "disklab/math/constants.h"
 #include "disklab/math/elliptic.h"
+#include "reference_csv.h"
 
 namespace disklab::cli {
 namespace {
@@ -36,14 +37,7 @@ struct EllintState {
 };
 
 // Signed distance in representable doubles (both finite).
-int64_t ulp_distance(double a, double b) {
-  auto key = [](double x) {
-    int64_t i;
-    std::memcpy(&i, &x, sizeof i);
-    return i < 0 ? std::numeric_limits<int64_t>::min() - i : i;
-  };
-  return key(a) - key(b);
-}
+using reference::ulp_distance;
 
 // Boost's value (or its error message) next to ours.
 template <class Eval>

@@ -2,14 +2,11 @@
 // Reading the committed 50-digit elliptic-integral tables (reference/elliptic_*.csv) and
 // measuring errors in ulps. A missing or malformed table is a test FAILURE (an exception the
 // test does not catch), never a skip.
-#include <cmath>
-#include <cstdint>
-#include <cstring>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "reference_csv.h"
 
 namespace disklab::test {
 
@@ -21,42 +18,23 @@ struct EllipticRow {
 
 inline std::vector<EllipticRow> read_elliptic_table(const std::string& name,
                                                     std::size_t input_count) {
-  const std::string path = std::string(DISKLAB_REFERENCE_DIR) + "/" + name;
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("reference table missing: " + path);
+  // At least 100 rows: a truncated table must not pass as a smaller test.
+  const auto table =
+      reference::read_csv_table(std::string(DISKLAB_REFERENCE_DIR) + "/" + name, {}, 100);
+  if (table.columns.size() != input_count + 1)
+    throw std::runtime_error(name + ": expected " + std::to_string(input_count + 1) + " columns");
   std::vector<EllipticRow> rows;
-  std::string line;
-  bool header_seen = false;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (!header_seen) {  // column names
-      header_seen = true;
-      continue;
-    }
-    std::stringstream ss(line);
-    std::string field;
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
     EllipticRow row;
-    while (std::getline(ss, field, ','))
-      row.inputs.push_back(std::strtod(field.c_str(), nullptr));
-    if (row.inputs.size() != input_count + 1)
-      throw std::runtime_error("malformed row in " + path + ": " + line);
-    row.value = line.substr(line.rfind(',') + 1);
-    row.value_rounded = row.inputs.back();
-    row.inputs.pop_back();
+    for (std::size_t i = 0; i < input_count; ++i)
+      row.inputs.push_back(table.number(r, i));
+    row.value = table.rows[r][input_count];
+    row.value_rounded = table.number(r, input_count);
     rows.push_back(std::move(row));
   }
-  if (rows.size() < 100) throw std::runtime_error("reference table too short: " + path);
   return rows;
 }
 
-// Signed distance in representable doubles between a and b (0 if equal; both finite).
-inline int64_t ulp_distance(double a, double b) {
-  auto key = [](double x) {
-    int64_t i;
-    std::memcpy(&i, &x, sizeof i);
-    return i < 0 ? std::numeric_limits<int64_t>::min() - i : i;  // monotone in x
-  };
-  return key(a) - key(b);
-}
+using reference::ulp_distance;
 
 }  // namespace disklab::test

@@ -1,34 +1,18 @@
 #include "support/disk_quadrature.h"
 
+#include "reference_csv.h"
+
 #include <algorithm>
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/math/quadrature/tanh_sinh.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 namespace disklab::test {
 namespace {
 
 using Real = boost::multiprecision::cpp_bin_float_50;
-
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> out;
-  std::stringstream s(line);
-  std::string item;
-  while (std::getline(s, item, ','))
-    out.push_back(item);
-  return out;
-}
-
-double num(const std::string& text) {
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (end == text.c_str()) throw std::runtime_error("solid_angle.csv: bad number '" + text + "'");
-  return v;
-}
 
 struct ShapeReal {
   Real a, b, a_t, b_t;
@@ -59,34 +43,25 @@ std::filesystem::path solid_angle_table_path() {
 }
 
 std::vector<SolidAngleRow> load_solid_angle_table() {
-  const auto path = solid_angle_table_path();
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("missing reference table " + path.string());
+  const auto t = reference::read_csv_table(
+      solid_angle_table_path(), {"id", "category", "cx", "cy", "cz", "nx", "ny", "nz", "radius",
+                                 "ox", "oy", "oz", "two_sided", "distance", "omega"});
   std::vector<SolidAngleRow> rows;
-  std::string line;
-  bool header = false;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (!header) {
-      header = true;
-      continue;
-    }
-    const auto f = split(line);
-    if (f.size() != 16) throw std::runtime_error("solid_angle.csv: bad row: " + line);
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    const auto num = [&](std::size_t i) { return t.number(r, i); };
     SolidAngleRow row;
-    row.id = static_cast<int>(num(f[0]));
-    row.category = f[1];
-    row.center = Vec3(num(f[2]), num(f[3]), num(f[4]));
-    row.normal = Vec3(num(f[5]), num(f[6]), num(f[7]));
-    row.radius = num(f[8]);
-    row.point = Vec3(num(f[9]), num(f[10]), num(f[11]));
-    row.two_sided = f[12] == "1";
-    row.distance = num(f[13]);
-    row.omega_text = f[14];
-    row.omega = num(f[14]);
+    row.id = static_cast<int>(num(0));
+    row.category = t.rows[r][1];
+    row.center = Vec3(num(2), num(3), num(4));
+    row.normal = Vec3(num(5), num(6), num(7));
+    row.radius = num(8);
+    row.point = Vec3(num(9), num(10), num(11));
+    row.two_sided = t.rows[r][12] == "1";
+    row.distance = num(13);
+    row.omega_text = t.rows[r][14];
+    row.omega = num(14);
     rows.push_back(row);
   }
-  if (rows.empty()) throw std::runtime_error("solid_angle.csv: no rows in " + path.string());
   return rows;
 }
 

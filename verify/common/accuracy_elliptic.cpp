@@ -8,7 +8,6 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <functional>
 #include <limits>
 #include <sstream>
@@ -17,6 +16,7 @@
 
 #include "common/output.h"
 #include "disklab/math/elliptic.h"
+#include "reference_csv.h"
 
 namespace disklab::cli {
 namespace {
@@ -30,44 +30,23 @@ struct Row {
 };
 
 std::vector<Row> read_table(const std::filesystem::path& path, bool has_n) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("reference table missing: " + path.string());
+  const auto t =
+      reference::read_csv_table(path, has_n ? std::vector<std::string>{"n", "phi", "m", "Pi"}
+                                            : std::vector<std::string>{"phi", "m", "F"});
   std::vector<Row> rows;
-  std::string line;
-  bool header = false;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (!header) {
-      header = true;
-      continue;
-    }
-    std::vector<double> v;
-    std::stringstream ss(line);
-    std::string field;
-    while (std::getline(ss, field, ','))
-      v.push_back(std::strtod(field.c_str(), nullptr));
-    if (v.size() != (has_n ? 4u : 3u))
-      throw std::runtime_error("malformed row in " + path.string() + ": " + line);
-    Row r;
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    Row row;
     std::size_t i = 0;
-    if (has_n) r.n = v[i++];
-    r.phi = v[i++];
-    r.m = v[i++];
-    r.reference = v[i];
-    rows.push_back(r);
+    if (has_n) row.n = t.number(r, i++);
+    row.phi = t.number(r, i++);
+    row.m = t.number(r, i++);
+    row.reference = t.number(r, i);
+    rows.push_back(row);
   }
-  if (rows.empty()) throw std::runtime_error("reference table empty: " + path.string());
   return rows;
 }
 
-int64_t ulp_distance(double a, double b) {
-  auto key = [](double x) {
-    int64_t i;
-    std::memcpy(&i, &x, sizeof i);
-    return i < 0 ? std::numeric_limits<int64_t>::min() - i : i;
-  };
-  return key(a) - key(b);
-}
+using reference::ulp_distance;
 
 struct Stats {
   std::string function, implementation, subset;

@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -16,6 +15,7 @@
 #include "common/output.h"
 #include "disklab/ellipse/geometry.h"
 #include "disklab/ellipse/solid_angle.h"
+#include "reference_csv.h"
 
 namespace disklab::cli {
 namespace {
@@ -48,39 +48,23 @@ struct Row {
 };
 
 std::vector<Row> read_table(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error("reference table missing: " + path.string());
+  const auto t = reference::read_csv_table(
+      path, {"id", "category", "cx", "cy", "cz", "nx", "ny", "nz", "radius", "ox", "oy", "oz",
+             "two_sided", "distance", "omega"});
   std::vector<Row> rows;
-  std::string line;
-  bool header = false;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') continue;
-    if (!header) {
-      if (line.rfind("id,category,cx,cy,cz,nx,ny,nz,radius,ox,oy,oz,two_sided,distance,omega", 0) !=
-          0)
-        throw std::runtime_error("unexpected header in " + path.string() + ": " + line);
-      header = true;
-      continue;
-    }
-    std::vector<std::string> f;
-    std::stringstream ss(line);
-    std::string field;
-    while (std::getline(ss, field, ','))
-      f.push_back(field);
-    if (f.size() < 15) throw std::runtime_error("malformed row in " + path.string() + ": " + line);
-    auto num = [&](int i) { return std::strtod(f[i].c_str(), nullptr); };
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    const auto num = [&](std::size_t k) { return t.number(i, k); };
     Row r;
-    r.id = std::atoi(f[0].c_str());
-    r.category = f[1];
+    r.id = static_cast<int>(num(0));
+    r.category = t.rows[i][1];
     r.disk.center = Vec3(num(2), num(3), num(4));
     r.disk.normal = Vec3(num(5), num(6), num(7));
     r.disk.radius = num(8);
     r.o = Vec3(num(9), num(10), num(11));
-    r.disk.two_sided = f[12] == "1";
-    r.reference = std::strtold(f[14].c_str(), nullptr);
+    r.disk.two_sided = t.rows[i][12] == "1";
+    r.reference = std::strtold(t.rows[i][14].c_str(), nullptr);
     rows.push_back(r);
   }
-  if (rows.empty()) throw std::runtime_error("reference table empty: " + path.string());
   return rows;
 }
 

@@ -1,0 +1,89 @@
+#pragma once
+// Reading the committed reference tables (reference/*.csv), shared by the property tests and
+// `disklab accuracy`. Format: '#' lines record provenance, the first other line names the
+// columns, every row has one field per column. A missing or malformed table throws (a test
+// failure or an exit 1, never a silent skip). Header-only, no dependency beyond the standard
+// library, so the generators, tests and CLI read the files the same way.
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace disklab::reference {
+
+struct CsvTable {
+  std::filesystem::path path;
+  std::vector<std::string> columns;
+  std::vector<std::vector<std::string>> rows;  // fields as text: values keep all 45 digits
+
+  // Field i of row r as a double (strtod rounds correctly); throws on a non-number.
+  double number(std::size_t r, std::size_t i) const {
+    const std::string& text = rows[r][i];
+    char* end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    if (end == text.c_str())
+      throw std::runtime_error(path.string() + ": row " + std::to_string(r + 1) + ", column '" +
+                               columns[i] + "': not a number '" + text + "'");
+    return v;
+  }
+};
+
+inline std::vector<std::string> split_csv_line(const std::string& line) {
+  std::vector<std::string> fields;
+  std::stringstream s(line);
+  std::string field;
+  while (std::getline(s, field, ','))
+    fields.push_back(field);
+  if (!line.empty() && line.back() == ',') fields.emplace_back();
+  return fields;
+}
+
+// Reads `path`. `expected_columns`, when given, must equal the header's leading columns (a
+// table regenerated with other columns must not be read by position silently).
+inline CsvTable read_csv_table(const std::filesystem::path& path,
+                               const std::vector<std::string>& expected_columns = {},
+                               std::size_t min_rows = 1) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("reference table missing: " + path.string());
+  CsvTable table;
+  table.path = path;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty() || line[0] == '#') continue;
+    if (table.columns.empty()) {
+      table.columns = split_csv_line(line);
+      for (std::size_t i = 0; i < expected_columns.size(); ++i)
+        if (i >= table.columns.size() || table.columns[i] != expected_columns[i])
+          throw std::runtime_error("unexpected header in " + path.string() + ": " + line);
+      continue;
+    }
+    auto fields = split_csv_line(line);
+    if (fields.size() != table.columns.size())
+      throw std::runtime_error("malformed row in " + path.string() + ": " + line);
+    table.rows.push_back(std::move(fields));
+  }
+  if (table.rows.size() < min_rows)
+    throw std::runtime_error("reference table too short (" + std::to_string(table.rows.size()) +
+                             " rows): " + path.string());
+  return table;
+}
+
+// Signed distance in representable doubles between a and b (0 if equal; both finite).
+inline int64_t ulp_distance(double a, double b) {
+  auto key = [](double x) {
+    int64_t i;
+    std::memcpy(&i, &x, sizeof i);
+    return i < 0 ? std::numeric_limits<int64_t>::min() - i : i;  // monotone in x
+  };
+  return key(a) - key(b);
+}
+
+}  // namespace disklab::reference
