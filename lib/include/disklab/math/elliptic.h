@@ -121,9 +121,13 @@ inline W rf_series(W A, W x, W y) {
   const W X = (A - x) / A, Y = (A - y) / A, Z = -(X + Y);
   const W E2 = X * Y - Z * Z;
   const W E3 = X * Y * Z;
-  return (1 - E2 / 10 + E3 / 14 + E2 * E2 / 24 - 3 * E2 * E3 / 44 - 5 * E2 * E2 * E2 / 208 +
-          3 * E3 * E3 / 104 + E2 * E2 * E3 / 16) /
-         sqrt(A);
+  // The tail (|tail| < tol^2) is summed on its own, smallest terms first, and applied as
+  // r + r * tail: adding each term to 1 in turn would round at ulp(1) every time (up to ~3 ulp
+  // in double), and forming 1 + tail before the division rounds once more.
+  const W tail = E2 * E2 * E3 / 16 + 3 * E3 * E3 / 104 - 5 * E2 * E2 * E2 / 208 - 3 * E2 * E3 / 44 +
+                 E2 * E2 / 24 + E3 / 14 - E2 / 10;
+  const W r = 1 / sqrt(A);
+  return r + r * tail;
 }
 
 // R_F by duplication (DLMF 19.36.1), arguments valid (>= 0, at most one zero). sx0, sz0 are
@@ -207,10 +211,12 @@ inline void rf_rj_loop(W x, W y, W z, W p, W sx0, W sz0, W& rf, W& rj) {
   const W E5 = XYZ * P2;
   // DLMF 19.36.2 through degree 5, plus Carlson's degree-6 and -7 terms (the 50-digit test
   // against the tables would see a wrong coefficient: their size there is tol^6 ~ 1e-38).
-  const W series = 1 - 3 * E2 / 14 + E3 / 6 + 9 * E2 * E2 / 88 - 3 * E4 / 22 - 9 * E2 * E3 / 52 +
-                   3 * E5 / 26 - E2 * E2 * E2 / 16 + 3 * E3 * E3 / 40 + 3 * E2 * E4 / 20 +
-                   45 * E2 * E2 * E3 / 272 - 9 * (E3 * E4 + E2 * E5) / 68;
-  rj = scale * series / (AJ * sqrt(AJ)) + 6 * sum;
+  // Summed apart from the leading 1 and applied as r + r * tail, as in rf_series.
+  const W tail = 45 * E2 * E2 * E3 / 272 - 9 * (E3 * E4 + E2 * E5) / 68 - E2 * E2 * E2 / 16 +
+                 3 * E3 * E3 / 40 + 3 * E2 * E4 / 20 + 9 * E2 * E2 / 88 - 3 * E4 / 22 -
+                 9 * E2 * E3 / 52 + 3 * E5 / 26 + E3 / 6 - 3 * E2 / 14;
+  const W r = scale / (AJ * sqrt(AJ));
+  rj = (r + r * tail) + 6 * sum;
 }
 
 template <class Real, class W>
