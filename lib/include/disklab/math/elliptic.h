@@ -118,15 +118,18 @@ template <class W>
 inline W rf_series(W A, W x, W y) {
   using std::sqrt;
   // A_k - x_k = 4^-k (A0 - x0): DLMF's X_k, formed from the final values.
-  const W X = (A - x) / A, Y = (A - y) / A, Z = -(X + Y);
+  // Divisions by constants are written as products with folded reciprocals (a division costs
+  // several multiplications, and the tail only needs a few correct digits).
+  const W inv_A = 1 / A;
+  const W X = (A - x) * inv_A, Y = (A - y) * inv_A, Z = -(X + Y);
   const W E2 = X * Y - Z * Z;
   const W E3 = X * Y * Z;
-  // The tail (|tail| < tol^2) is summed on its own, smallest terms first, and applied as
-  // r + r * tail: adding each term to 1 in turn would round at ulp(1) every time (up to ~3 ulp
-  // in double), and forming 1 + tail before the division rounds once more.
-  const W tail = E2 * E2 * E3 / 16 + 3 * E3 * E3 / 104 - 5 * E2 * E2 * E2 / 208 - 3 * E2 * E3 / 44 +
-                 E2 * E2 / 24 + E3 / 14 - E2 / 10;
-  const W r = 1 / sqrt(A);
+  // The tail (|tail| < tol^2) is summed on its own and applied as r + r * tail: adding each
+  // term to 1 in turn would round at ulp(1) every time (up to ~3 ulp in double), and forming
+  // 1 + tail before the division rounds once more.
+  const W tail = E2 * (W(-1) / 10 + E2 * (W(1) / 24 - W(5) / 208 * E2)) +
+                 E3 * (W(1) / 14 + E2 * (W(-3) / 44 + W(1) / 16 * E2) + W(3) / 104 * E3);
+  const W r = sqrt(inv_A);
   return r + r * tail;
 }
 
@@ -138,9 +141,9 @@ inline W rf_loop(W x, W y, W z, W sx0, W sz0) {
   using std::abs;
   using std::max;
   using std::sqrt;
-  W A = (x + y + z) / 3;
+  W A = (x + y + z) * (W(1) / 3);
   // q = max|A0 - x_j| / tol, divided by 4 per step: stop when q <= A (then |X_j| <= tol).
-  W q = max(abs(A - x), max(abs(A - y), abs(A - z))) / duplication_tolerance<W>();
+  W q = max(abs(A - x), max(abs(A - y), abs(A - z))) * (1 / duplication_tolerance<W>());
   for (bool first = true; q > A; first = false) {
     const W sx = first ? sx0 : W(sqrt(x)), sy = sqrt(y), sz = first ? sz0 : W(sqrt(z));
     const W lambda = sx * (sy + sz) + sy * sz;
@@ -168,12 +171,12 @@ inline void rf_rj_loop(W x, W y, W z, W p, W sx0, W sz0, W& rf, W& rj) {
   using std::abs;
   using std::max;
   using std::sqrt;
-  W AF = (x + y + z) / 3;
-  W AJ = (x + y + z + 2 * p) / 5;
+  W AF = (x + y + z) * (W(1) / 3);
+  W AJ = (x + y + z + 2 * p) * (W(1) / 5);
   const W delta = (p - x) * (p - y) * (p - z);
-  const W tol = duplication_tolerance<W>();
-  W qF = max(abs(AF - x), max(abs(AF - y), abs(AF - z))) / tol;
-  W qJ = max(max(abs(AJ - x), abs(AJ - y)), max(abs(AJ - z), abs(AJ - p))) / tol;
+  const W inv_tol = 1 / duplication_tolerance<W>();
+  W qF = max(abs(AF - x), max(abs(AF - y), abs(AF - z))) * inv_tol;
+  W qJ = max(max(abs(AJ - x), abs(AJ - y)), max(abs(AJ - z), abs(AJ - p))) * inv_tol;
   W scale = 1;   // 4^-k
   W scale3 = 1;  // 4^-3k
   W sum = 0;     // sum_k 4^-k R_C(1, 1 + e_k) / d_k
@@ -201,7 +204,8 @@ inline void rf_rj_loop(W x, W y, W z, W p, W sx0, W sz0, W& rf, W& rj) {
     scale3 /= 64;
   }
   rf = rf_series(AF, x, y);
-  const W X = (AJ - x) / AJ, Y = (AJ - y) / AJ, Z = (AJ - z) / AJ;
+  const W inv_AJ = 1 / AJ;
+  const W X = (AJ - x) * inv_AJ, Y = (AJ - y) * inv_AJ, Z = (AJ - z) * inv_AJ;
   const W P = -(X + Y + Z) / 2;
   const W XYZ = X * Y * Z;
   const W P2 = P * P;
@@ -212,10 +216,11 @@ inline void rf_rj_loop(W x, W y, W z, W p, W sx0, W sz0, W& rf, W& rj) {
   // DLMF 19.36.2 through degree 5, plus Carlson's degree-6 and -7 terms (the 50-digit test
   // against the tables would see a wrong coefficient: their size there is tol^6 ~ 1e-38).
   // Summed apart from the leading 1 and applied as r + r * tail, as in rf_series.
-  const W tail = 45 * E2 * E2 * E3 / 272 - 9 * (E3 * E4 + E2 * E5) / 68 - E2 * E2 * E2 / 16 +
-                 3 * E3 * E3 / 40 + 3 * E2 * E4 / 20 + 9 * E2 * E2 / 88 - 3 * E4 / 22 -
-                 9 * E2 * E3 / 52 + 3 * E5 / 26 + E3 / 6 - 3 * E2 / 14;
-  const W r = scale / (AJ * sqrt(AJ));
+  const W tail =
+      E2 * (W(-3) / 14 + E2 * (W(9) / 88 - W(1) / 16 * E2)) +
+      E3 * (W(1) / 6 + E2 * (W(-9) / 52 + W(45) / 272 * E2) + W(3) / 40 * E3 - W(9) / 68 * E4) +
+      E4 * (W(-3) / 22 + W(3) / 20 * E2) + E5 * (W(3) / 26 - W(9) / 68 * E2);
+  const W r = scale * inv_AJ * sqrt(inv_AJ);
   rj = (r + r * tail) + 6 * sum;
 }
 
@@ -354,21 +359,22 @@ inline Real ellint_pi_core(Real n, Real one_minus_n, Real phi, Real m, Real one_
     if (!(p > 0)) return std::numeric_limits<Real>::infinity();  // n == 1 at phi == pi/2
     W rf, rj;
     rf_rj_legendre<Real>(a.c, a.c2, a.delta2, p, rf, rj);
-    return static_cast<Real>(a.s * rf + W(n) / 3 * s3 * rj);
+    return static_cast<Real>(a.s * rf + W(n) * (W(1) / 3) * s3 * rj);
   }
   // n < 0, N = (m - n)/(1 - n) in (0, 1): A&S 17.7.15 rearranged into three non-negative terms
   // (see the header comment). 1 - N = (1 - m)/(1 - n) and 1 - N s^2 = c^2 + (1 - N) s^2.
-  const W one_minus_N = W(one_minus_m) / W(one_minus_n);
+  const W inv_one_minus_n = 1 / W(one_minus_n);
+  const W one_minus_N = W(one_minus_m) * inv_one_minus_n;
   const W pN = a.c2 + one_minus_N * a.s * a.s;
   W rf, rj;
   rf_rj_legendre<Real>(a.c, a.c2, a.delta2, pN, rf, rj);
-  const W w = W(-n) / W(one_minus_n);  // in (0, 1); kept apart so (1 - n)^2 never overflows
-  const W mn = W(m) - W(n);            // > 0
+  const W w = W(-n) * inv_one_minus_n;  // in (0, 1); kept apart so (1 - n)^2 never overflows
+  const W mn = W(m) - W(n);             // > 0
   const W sw = sqrt(w), smn = sqrt(mn);
-  const W term_j = w * one_minus_N / 3 * s3 * rj;
+  const W term_j = w * one_minus_N * (W(1) / 3) * s3 * rj;
   const W arg = sw * smn * a.s * a.c / sqrt(a.delta2);
   const W term_atan = (sw / smn) * W(atan(static_cast<Real>(arg)));
-  return static_cast<Real>(a.s * rf / W(one_minus_n) + term_j + term_atan);
+  return static_cast<Real>(a.s * rf * inv_one_minus_n + term_j + term_atan);
 }
 
 // Reduction of any finite phi to [0, pi/2]: phi = k pi + r with |r| <= pi/2, then
