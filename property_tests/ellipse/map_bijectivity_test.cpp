@@ -68,7 +68,9 @@ void check_u(const AnyMap& m, const DiskConfig& c, Point2 u) {
                       (u.y == 0.0 || (s.local.x() == 0.0 && s.local.y() == 0.0));
   double de1 = std::abs(back.x - u.x);
   if (m.name == "radial" || m.name == "radial-fast") de1 = std::min(de1, 1.0 - de1);  // periodic
-  if (!centre) EXPECT_LE(de1, tol) << chain(m, c, u, s, back);
+  if (!centre) {
+    EXPECT_LE(de1, tol) << chain(m, c, u, s, back);
+  }
   EXPECT_LE(std::abs(back.y - u.y), tol) << chain(m, c, u, s, back);
 }
 
