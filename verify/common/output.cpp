@@ -27,8 +27,15 @@ fs::path temp_name(const fs::path& target) {
   static std::atomic<int> counter{0};
   // Keep the extension last: matplotlib chooses the format from it.
   fs::path temp = target;
-  temp.replace_filename("." + target.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
-                        std::to_string(counter++) + target.extension().string());
+  // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on the operator+ chain.
+  std::string name = ".";
+  name += target.stem().string();
+  name += ".tmp-";
+  name += std::to_string(::getpid());
+  name += '-';
+  name += std::to_string(counter++);
+  name += target.extension().string();
+  temp.replace_filename(name);
   return temp;
 }
 }  // namespace
