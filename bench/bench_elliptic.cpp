@@ -105,7 +105,7 @@ enum class Impl { kOwn, kBoostDouble, kBoostDefault, kOwnDoubleLoop };
 // Pi as elliptic.h computes it, but with the duplication loop in double instead of long double:
 // the speed side of the accuracy trade-off (not a library function: in double the loop's
 // rounding, mostly that of the square roots, the lambda_k and the d_k, reaches 4 ulp on the
-// 50-digit tables (23 of 2130 Pi rows above 2 ulp), above the 2-ulp promise).
+// 50-digit tables (21 of 2130 Pi rows above 2 ulp), above the 2-ulp promise).
 double pi_double_loop(double n, double phi, double m) {
   namespace d = dm::detail;
   const auto a = d::legendre_args<double, double>(phi, m, 1.0 - m);
