@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_common.h"
 #include "disklab/disk/strategy.h"
 #include "disklab/sequence/random.h"
 
@@ -113,38 +114,22 @@ BENCHMARK(BM_Inverse<disk::invert_polar, disk::sample_polar>)->Name("BM_InvertPo
 BENCHMARK(BM_Inverse<disk::invert_concentric, disk::sample_concentric>)
     ->Name("BM_InvertConcentric");
 
-// Console table as usual, then each benchmark's time per item over the baseline's.
-class RatioReporter : public benchmark::ConsoleReporter {
- public:
-  void ReportRuns(const std::vector<Run>& runs) override {
-    ConsoleReporter::ReportRuns(runs);
-    for (const Run& r : runs) {
-      if (r.error_occurred || r.run_type != Run::RT_Iteration) continue;
-      const auto it = r.counters.find("items_per_second");
-      if (it != r.counters.end() && it->second.value > 0)
-        ns_per_item_[r.benchmark_name()] = 1e9 / it->second.value;
-    }
+// After the console table: each benchmark's time per item over the baseline's.
+void print_summary(const disklab::bench::Results& results) {
+  std::map<std::string, double> ns_per_item;
+  for (const auto& [name, v] : results) {
+    const double per_second = disklab::bench::counter(v, "items_per_second");
+    if (per_second > 0) ns_per_item[name] = 1e9 / per_second;
   }
-  void Finalize() override {
-    ConsoleReporter::Finalize();
-    const auto base = ns_per_item_.find("BM_Baseline_Pcg32Pair");
-    if (base == ns_per_item_.end()) return;
-    std::printf("\nPer disk sample, relative to drawing one PCG32 pair (same run):\n");
-    for (const auto& [name, ns] : ns_per_item_)
-      std::printf("  %-24s %8.2f ns  %6.2f x baseline\n", name.c_str(), ns, ns / base->second);
-  }
-
- private:
-  std::map<std::string, double> ns_per_item_;
-};
+  const auto base = ns_per_item.find("BM_Baseline_Pcg32Pair");
+  if (base == ns_per_item.end()) return;
+  std::printf("\nPer disk sample, relative to drawing one PCG32 pair (same run):\n");
+  for (const auto& [name, ns] : ns_per_item)
+    std::printf("  %-24s %8.2f ns  %6.2f x baseline\n", name.c_str(), ns, ns / base->second);
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  RatioReporter reporter;
-  benchmark::RunSpecifiedBenchmarks(&reporter);
-  benchmark::Shutdown();
-  return 0;
+  return disklab::bench::run_benchmarks(argc, argv, print_summary);
 }

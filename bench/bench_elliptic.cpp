@@ -41,6 +41,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_common.h"
 #include "disklab/math/elliptic.h"
 #include "disklab/sequence/random.h"
 
@@ -207,57 +208,27 @@ void register_benchmarks() {
   register_fn<Fn::kRJ>("RJ", Band::kMixed, "mixed");
 }
 
-// Console table as usual, then the median (or only) values per benchmark and the target check.
-class RatioReporter : public benchmark::ConsoleReporter {
- public:
-  void ReportRuns(const std::vector<Run>& runs) override {
-    ConsoleReporter::ReportRuns(runs);
-    for (const Run& r : runs) {
-      if (r.error_occurred) continue;
-      const bool single = r.run_type == Run::RT_Iteration && r.repetitions <= 1;
-      const bool median = r.run_type == Run::RT_Aggregate && r.aggregate_name == "median";
-      if (!single && !median) continue;
-      // run_name without the "/manual_time" and "/iterations:1" decorations.
-      std::string name = r.run_name.function_name;
-      if (!r.run_name.args.empty()) name += "/" + r.run_name.args;
-      auto& row = rows_[name];
-      for (const auto& [key, counter] : r.counters)
-        row[key] = counter.value;
-    }
+// After the console table: the median (or only) values per benchmark and the target check.
+void print_summary(const disklab::bench::Results& rows) {
+  using disklab::bench::counter;
+  std::printf("\nMedian per evaluation, same run (ratio: time / boost-double's time):\n");
+  std::printf("%-30s %10s %12s %8s\n", "benchmark", "ns", "boost-dbl ns", "ratio");
+  for (const auto& [name, v] : rows)
+    std::printf("%-30s %10.1f %12.1f %8.3f\n", name.c_str(), counter(v, "ns"),
+                counter(v, "boost_double_ns"), counter(v, "ratio_to_boost_double"));
+  const auto it = rows.find("Pi/mixed/own");
+  if (it != rows.end()) {
+    const double ratio = counter(it->second, "ratio_to_boost_double");
+    std::printf(
+        "\nTarget: own Pi <= %.2fx boost::math::ellint_3 (promote_double<false>): "
+        "%.3fx on the mixed set, %s\n",
+        kTargetPiRatio, ratio, ratio <= kTargetPiRatio ? "met" : "MISSED");
   }
-  void Finalize() override {
-    ConsoleReporter::Finalize();
-    std::printf("\nMedian per evaluation, same run (ratio: time / boost-double's time):\n");
-    std::printf("%-30s %10s %12s %8s\n", "benchmark", "ns", "boost-dbl ns", "ratio");
-    for (const auto& [name, v] : rows_)
-      std::printf("%-30s %10.1f %12.1f %8.3f\n", name.c_str(), get(v, "ns"),
-                  get(v, "boost_double_ns"), get(v, "ratio_to_boost_double"));
-    const auto it = rows_.find("Pi/mixed/own");
-    if (it != rows_.end()) {
-      const double ratio = get(it->second, "ratio_to_boost_double");
-      std::printf(
-          "\nTarget: own Pi <= %.2fx boost::math::ellint_3 (promote_double<false>): "
-          "%.3fx on the mixed set, %s\n",
-          kTargetPiRatio, ratio, ratio <= kTargetPiRatio ? "met" : "MISSED");
-    }
-  }
-
- private:
-  static double get(const std::map<std::string, double>& v, const char* key) {
-    const auto it = v.find(key);
-    return it == v.end() ? -1.0 : it->second;
-  }
-  std::map<std::string, std::map<std::string, double>> rows_;
-};
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   register_benchmarks();
-  RatioReporter reporter;
-  benchmark::RunSpecifiedBenchmarks(&reporter);
-  benchmark::Shutdown();
-  return 0;
+  return disklab::bench::run_benchmarks(argc, argv, print_summary);
 }

@@ -38,6 +38,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_common.h"
 #include "disklab/disk/concentric.h"
 #include "disklab/disk/polar.h"
 #include "disklab/ellipse/area.h"
@@ -371,72 +372,52 @@ void register_map(const std::string& name) {
   }
 }
 
-// Console table as usual, then the median (or only) ratios per map and configuration, and the
-// issue's targets.
-class RatioReporter : public benchmark::ConsoleReporter {
- public:
-  void ReportRuns(const std::vector<Run>& runs) override {
-    ConsoleReporter::ReportRuns(runs);
-    for (const Run& r : runs) {
-      if (r.error_occurred) continue;
-      const bool single = r.run_type == Run::RT_Iteration && r.repetitions <= 1;
-      const bool median = r.run_type == Run::RT_Aggregate && r.aggregate_name == "median";
-      if (!single && !median) continue;
-      std::string name = r.run_name.str();
-      for (const auto& [key, counter] : r.counters)
-        values_[name][key] = counter.value;
+// Worst ratio to area over the configurations of sample/<map>/*, against its target.
+void check_target(const disklab::bench::Results& values, const std::string& map, double target) {
+  double worst = -1.0;
+  std::string where;
+  for (const auto& [name, v] : values) {
+    if (name.rfind("sample/" + map + "/", 0) != 0) continue;
+    const double ratio = disklab::bench::counter(v, "ratio_to_area");
+    if (ratio > worst) {
+      worst = ratio;
+      where = name;
     }
   }
-  void Finalize() override {
-    ConsoleReporter::Finalize();
-    std::printf(
-        "\nMedian ratios (same run). sample: per direction; setup: per make;\n"
-        "amortized/k: (make + k samples) / k, both against area sampling.\n");
-    std::printf("%-34s %9s %9s %9s %9s %7s\n", "benchmark", "ns", "x area", "x concen", "x polar",
-                "evals");
-    for (const auto& [name, v] : values_) {
-      auto get = [&v](const char* k) {
-        const auto it = v.find(k);
-        return it == v.end() ? -1.0 : it->second;
-      };
-      std::printf("%-34s %9.1f %9.2f", name.c_str(), get("ns"), get("ratio_to_area"));
-      if (get("ratio_to_concentric") >= 0)
-        std::printf(" %9.1f %9.1f", get("ratio_to_concentric"), get("ratio_to_polar"));
-      else
-        std::printf(" %9s %9s", "", "");
-      if (get("evals") >= 0) std::printf(" %7.2f", get("evals"));
-      std::printf("\n");
-    }
-    std::printf("\nTargets (worst configuration of sample/<map>/*, ratio to area):\n");
-    check("radial", kTargetRadial);
-    check("radial-fast", kTargetRadialFast);
-    check("tabulated", kTargetTabulated);
-    std::printf(
-        "Anchor (issue 5): the authors' Newton sample costs ~40-220x a polar disk sample;\n"
-        "compare the 'x polar' column of sample/radial, sample/parallel.\n");
+  if (worst < 0) {
+    std::printf("  %-12s not run\n", map.c_str());
+    return;
   }
+  std::printf("  %-12s worst %.2fx (%s), target <= %.1fx: %s\n", map.c_str(), worst, where.c_str(),
+              target, worst <= target ? "met" : "MISSED");
+}
 
- private:
-  void check(const std::string& map, double target) {
-    double worst = -1.0;
-    std::string where;
-    for (const auto& [name, v] : values_) {
-      if (name.rfind("sample/" + map + "/", 0) != 0) continue;
-      const auto it = v.find("ratio_to_area");
-      if (it != v.end() && it->second > worst) {
-        worst = it->second;
-        where = name;
-      }
-    }
-    if (worst < 0) {
-      std::printf("  %-12s not run\n", map.c_str());
-      return;
-    }
-    std::printf("  %-12s worst %.2fx (%s), target <= %.1fx: %s\n", map.c_str(), worst,
-                where.c_str(), target, worst <= target ? "met" : "MISSED");
+// After the console table: the median (or only) ratios per map and configuration, and the
+// issue's targets.
+void print_summary(const disklab::bench::Results& values) {
+  std::printf(
+      "\nMedian ratios (same run). sample: per direction; setup: per make;\n"
+      "amortized/k: (make + k samples) / k, both against area sampling.\n");
+  std::printf("%-34s %9s %9s %9s %9s %7s\n", "benchmark", "ns", "x area", "x concen", "x polar",
+              "evals");
+  for (const auto& [name, v] : values) {
+    const auto get = [&v](const char* k) { return disklab::bench::counter(v, k); };
+    std::printf("%-34s %9.1f %9.2f", name.c_str(), get("ns"), get("ratio_to_area"));
+    if (get("ratio_to_concentric") >= 0)
+      std::printf(" %9.1f %9.1f", get("ratio_to_concentric"), get("ratio_to_polar"));
+    else
+      std::printf(" %9s %9s", "", "");
+    if (get("evals") >= 0) std::printf(" %7.2f", get("evals"));
+    std::printf("\n");
   }
-  std::map<std::string, std::map<std::string, double>> values_;
-};
+  std::printf("\nTargets (worst configuration of sample/<map>/*, ratio to area):\n");
+  check_target(values, "radial", kTargetRadial);
+  check_target(values, "radial-fast", kTargetRadialFast);
+  check_target(values, "tabulated", kTargetTabulated);
+  std::printf(
+      "Anchor (issue 5): the authors' Newton sample costs ~40-220x a polar disk sample;\n"
+      "compare the 'x polar' column of sample/radial, sample/parallel.\n");
+}
 
 }  // namespace
 
@@ -452,10 +433,5 @@ int main(int argc, char** argv) {
   register_map<Radial4Adapter>("radial4");
   register_map<Plain<ell::TabulatedMap>>("tabulated");
   register_map<Plain<ell::RadialFastMap>>("radial-fast");
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  RatioReporter reporter;
-  benchmark::RunSpecifiedBenchmarks(&reporter);
-  benchmark::Shutdown();
-  return 0;
+  return disklab::bench::run_benchmarks(argc, argv, print_summary);
 }

@@ -35,6 +35,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "bench_common.h"
 #include "disklab/sequence/halton.h"
 #include "disklab/sequence/random.h"
 #include "disklab/sequence/sequence.h"
@@ -217,56 +218,26 @@ void register_benchmarks() {
       ->Unit(benchmark::kMillisecond);
 }
 
-// Console table as usual, then the median (or only) ratio per benchmark and the target check.
-class RatioReporter : public benchmark::ConsoleReporter {
- public:
-  void ReportRuns(const std::vector<Run>& runs) override {
-    ConsoleReporter::ReportRuns(runs);
-    for (const Run& r : runs) {
-      if (r.error_occurred) continue;
-      const bool single = r.run_type == Run::RT_Iteration && r.repetitions <= 1;
-      const bool median = r.run_type == Run::RT_Aggregate && r.aggregate_name == "median";
-      if (!single && !median) continue;
-      // run_name without the "/manual_time" and "/iterations:1" decorations.
-      std::string name = r.run_name.function_name;
-      if (!r.run_name.args.empty()) name += "/" + r.run_name.args;
-      auto& row = rows_[name];
-      for (const auto& [key, counter] : r.counters)
-        row[key] = counter.value;
-    }
+// After the console table: the median (or only) ratio per benchmark and the target check.
+void print_summary(const disklab::bench::Results& rows) {
+  using disklab::bench::counter;
+  std::printf("\nMedian per point, same run (setup: per table point):\n");
+  std::printf("%-36s %10s %12s %10s\n", "benchmark", "ns", "pcg32 ns", "ratio");
+  for (const auto& [name, v] : rows)
+    std::printf("%-36s %10.2f %12.2f %10.2f\n", name.c_str(), counter(v, "ns"),
+                counter(v, "pcg32_ns"), counter(v, "ratio_to_pcg32"));
+  std::printf("\nTarget: per point within %.1fx of a PCG32 pair (after set-up)\n", kTargetRatio);
+  for (const char* name : {"point/pmj02", "point/sobol-owen"}) {
+    const auto it = rows.find(name);
+    if (it == rows.end()) continue;
+    const double ratio = counter(it->second, "ratio_to_pcg32");
+    std::printf("  %-20s %6.2fx  %s\n", name, ratio, ratio <= kTargetRatio ? "met" : "MISSED");
   }
-  void Finalize() override {
-    ConsoleReporter::Finalize();
-    std::printf("\nMedian per point, same run (setup: per table point):\n");
-    std::printf("%-36s %10s %12s %10s\n", "benchmark", "ns", "pcg32 ns", "ratio");
-    for (const auto& [name, v] : rows_)
-      std::printf("%-36s %10.2f %12.2f %10.2f\n", name.c_str(), get(v, "ns"), get(v, "pcg32_ns"),
-                  get(v, "ratio_to_pcg32"));
-    std::printf("\nTarget: per point within %.1fx of a PCG32 pair (after set-up)\n", kTargetRatio);
-    for (const char* name : {"point/pmj02", "point/sobol-owen"}) {
-      const auto it = rows_.find(name);
-      if (it == rows_.end()) continue;
-      const double ratio = get(it->second, "ratio_to_pcg32");
-      std::printf("  %-20s %6.2fx  %s\n", name, ratio, ratio <= kTargetRatio ? "met" : "MISSED");
-    }
-  }
-
- private:
-  static double get(const std::map<std::string, double>& v, const char* key) {
-    const auto it = v.find(key);
-    return it == v.end() ? -1.0 : it->second;
-  }
-  std::map<std::string, std::map<std::string, double>> rows_;
-};
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   register_benchmarks();
-  RatioReporter reporter;
-  benchmark::RunSpecifiedBenchmarks(&reporter);
-  benchmark::Shutdown();
-  return 0;
+  return disklab::bench::run_benchmarks(argc, argv, print_summary);
 }
