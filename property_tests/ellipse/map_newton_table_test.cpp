@@ -46,8 +46,8 @@ TEST(MapNewton, IterationCountsRecorded) {
           worst = std::max(worst, it);
           sum += it;
           ++count;
-          EXPECT_LE(it, kMaxEvaluations) << name << " on " << c.describe() << " u=(" << u.x << ","
-                                         << u.y << ")";
+          EXPECT_LE(it, kMaxEvaluations)
+              << name << " on " << c.describe() << " u=(" << u.x << "," << u.y << ")";
         }
       }
       report << "[newton] " << name << " " << c.name << ": evaluations mean " << sum / count
@@ -89,8 +89,8 @@ TEST(MapTabulation, ErrorShrinksWithResolutionAtObservedOrder) {
     o << "  n=" << n << " max eps1 error " << e << "\n";
   }
   const double slope = log_log_slope(ns, errs);
-  std::cout << "[table] resolution study on " << c.describe() << "\n" << o.str()
-            << "  fitted order " << slope << "\n";
+  std::cout << "[table] resolution study on " << c.describe() << "\n"
+            << o.str() << "  fitted order " << slope << "\n";
   EXPECT_NEAR(slope, kTableOrder, kTableOrderSlack) << o.str();
   // The default table on the paper's configurations: error and rejection rate, reported.
   for (const auto& cfg : map_configs()) {
