@@ -29,23 +29,6 @@ constexpr double kAreaRel = 1e-9;
 // quadrature 1e-11 plus rounding.
 constexpr double kOmegaRel = 1e-10;
 
-// Boundary of the stratum [x0,x1] x [y0,y1], counter-clockwise in the square, as a closed curve
-// t in [0,1) -> square point (four edges of equal parameter length). Along each edge the
-// parameter is clustered towards the corners by the quintic smoothstep (tau ~ 10 s^3 at the
-// ends): the parallel map's rim behaves like eps1^(1/3) (h_p ~ sqrt(beta - phi_p) and
-// Omega_p ~ (beta - phi_p)^(3/2)), a singular parametrization that would stall the chord
-// quadrature; composed with s^3 it becomes smooth. For smooth maps the clustering is harmless.
-Point2 stratum_boundary(double x0, double x1, double y0, double y1, double t) {
-  const double s4 = 4.0 * t;
-  const int edge = std::min(3, static_cast<int>(s4));
-  const double s = s4 - edge;
-  const double tau = s * s * s * (10.0 - 15.0 * s + 6.0 * s * s);
-  if (edge == 0) return {x0 + tau * (x1 - x0), y0};
-  if (edge == 1) return {x1, y0 + tau * (y1 - y0)};
-  if (edge == 2) return {x1 - tau * (x1 - x0), y1};
-  return {x0, y1 - tau * (y1 - y0)};
-}
-
 struct AreaCheck {
   double worst_rel = 0.0;
   std::string worst;

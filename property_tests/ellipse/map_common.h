@@ -2,6 +2,7 @@
 // Shared fixtures of the spherical-ellipse map suites (map_*_test.cpp): the configurations, from
 // on-axis to grazing to 1e8 radii away, and a type-erased view of every map so one property can
 // run over all of them.
+#include <algorithm>
 #include <functional>
 #include <memory>
 #include <sstream>
@@ -51,6 +52,23 @@ inline std::vector<DiskConfig> map_configs() {
       {"far-1e4", Vec3(3e3, 2e3, 1e4), tilted_normal(), 1.0, Vec3::Zero()},
       {"far-1e8", Vec3(3e7, 2e7, 1e8), tilted_normal(), 1.0, Vec3::Zero()},
   };
+}
+
+// Boundary of the stratum [x0,x1] x [y0,y1], counter-clockwise in the square, as a closed curve
+// t in [0,1) -> square point (four edges of equal parameter length). Along each edge the
+// parameter is clustered towards the corners by the quintic smoothstep (tau ~ 10 s^3 at the
+// ends): the parallel map's rim behaves like eps1^(1/3) (h_p ~ sqrt(beta - phi_p) and
+// Omega_p ~ (beta - phi_p)^(3/2)), a singular parametrization that would stall the chord
+// quadrature; composed with s^3 it becomes smooth. For smooth maps the clustering is harmless.
+inline Point2 stratum_boundary(double x0, double x1, double y0, double y1, double t) {
+  const double s4 = 4.0 * t;
+  const int edge = std::min(3, static_cast<int>(s4));
+  const double s = s4 - edge;
+  const double tau = s * s * s * (10.0 - 15.0 * s + 6.0 * s * s);
+  if (edge == 0) return {x0 + tau * (x1 - x0), y0};
+  if (edge == 1) return {x1, y0 + tau * (y1 - y0)};
+  if (edge == 2) return {x1 - tau * (x1 - x0), y1};
+  return {x0, y1 - tau * (y1 - y0)};
 }
 
 // A map [0,1]^2 -> spherical ellipse with its inverse, for properties over all maps.

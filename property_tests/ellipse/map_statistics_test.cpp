@@ -279,20 +279,7 @@ std::vector<double> bin_solid_angles(const AnyMap& binning, int n) {
       const double x0 = double(ix) / n, x1 = double(ix + 1) / n, y0 = double(iy) / n,
                    y1 = double(iy + 1) / n;
       auto boundary = [&](double t) {
-        const double s4 = 4.0 * t;
-        const int edge = std::min(3, int(s4));
-        const double s = s4 - edge;
-        const double tau = s * s * s * (10.0 - 15.0 * s + 6.0 * s * s);
-        Point2 u;
-        if (edge == 0)
-          u = {x0 + tau * (x1 - x0), y0};
-        else if (edge == 1)
-          u = {x1, y0 + tau * (y1 - y0)};
-        else if (edge == 2)
-          u = {x1 - tau * (x1 - x0), y1};
-        else
-          u = {x0, y1 - tau * (y1 - y0)};
-        return binning.sample(u, nullptr).local;
+        return binning.sample(stratum_boundary(x0, x1, y0, y1, t), nullptr).local;
       };
       p[iy * n + ix] =
           std::abs(refined_solid_angle(boundary, 16, 1e-10, 0.0, 1 << 14).value) / binning.measure;
@@ -314,18 +301,8 @@ std::vector<double> bin_disk_areas(const AnyMap& binning, const DiskConfig& c, i
       auto area = [&](int k) {
         std::vector<Point2> ring(4 * k);
         for (int i = 0; i < 4 * k; ++i) {
-          const int edge = i / k;
-          const double s = double(i % k) / k;
-          const double tau = s * s * s * (10.0 - 15.0 * s + 6.0 * s * s);
-          Point2 u;
-          if (edge == 0)
-            u = {x0 + tau * (x1 - x0), y0};
-          else if (edge == 1)
-            u = {x1, y0 + tau * (y1 - y0)};
-          else if (edge == 2)
-            u = {x1 - tau * (x1 - x0), y1};
-          else
-            u = {x0, y1 - tau * (y1 - y0)};
+          // Point i of 4k, k per edge: t = i / (4k) walks the same boundary.
+          const Point2 u = stratum_boundary(x0, x1, y0, y1, double(i) / (4 * k));
           const Vec3 hit = g.hit(binning.sample(u, nullptr).direction) - g.c;
           ring[i] = {hit.dot(e1), hit.dot(e2)};
         }
