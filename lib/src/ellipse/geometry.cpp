@@ -154,6 +154,11 @@ SphericalEllipse make_spherical_ellipse(const Disk& disk, const Vec3& o) {
   se.c_t = s.c_t;
   se.radial_coefficient = s.radial_coefficient;
 
+  {
+    // c - o = (0, -e, h) in R_d; z_e = (0, -e, h (1 + a_t^2)) / zn, y_e = z_e x x_e.
+    const double k = h * (1.0 + s.a_t * s.a_t), zn = std::hypot(e, k);
+    se.center_local = Vec3(0.0, -(e / zn) * h * (s.a_t * s.a_t), (e / zn) * e + (k / zn) * h);
+  }
   se.frame.x = se.disk_frame.x;
   se.frame.z = (s.ze_y * se.disk_frame.y + s.ze_z * se.disk_frame.z).normalized();
   se.frame.y = se.frame.z.cross(se.frame.x);

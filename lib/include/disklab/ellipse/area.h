@@ -27,7 +27,7 @@ struct AreaSampler {
     if (s.g.empty) return s;
     s.e1 = s.g.xe;  // x_e = x_d lies in the disk plane
     s.e2 = s.g.n.cross(s.e1);
-    s.center_local = s.g.to_local(center - o);
+    s.center_local = s.g.se.center_local;  // closed form: no eps |c - o| error across the axis
     s.inv_area = 1.0 / (math::kPi * radius * radius);
     return s;
   }

@@ -57,6 +57,11 @@ struct SphericalEllipse {
 
   math::Frame disk_frame;  // R_d = (x_d, y_d, z_d), eq. (3) with x, y swapped (DESIGN.md)
   math::Frame frame;       // R_e = (x_e, y_e, z_e): x_e = x_d, z_e = ellipse centre
+  // c - o in R_e, from the scalars (0, -e h a_t^2, e^2 + h^2 (1 + a_t^2)) / |(e, h (1 + a_t^2))|:
+  // exact to a few ulps of each component. Projecting the world vector c - o onto x_e, y_e
+  // instead carries an absolute error ~eps |c - o|, i.e. relative ~eps |c - o| / r of the
+  // ellipse's size: 1e-8 at 1e8 radii.
+  Vec3 center_local = Vec3::UnitZ();
 
   // Shape (Sec. 3): semi-arcs alpha >= beta (eq. 5), planar semi-axes a = sin(alpha) >= b =
   // sin(beta) (eq. 4, the ellipse projected on the x_e y_e plane, a along x_e), tangent-ellipse
