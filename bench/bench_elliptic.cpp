@@ -15,6 +15,10 @@
 // log-uniform in [-1e6, -1) (the parallel map's n = -b_t^2 for far, grazing lights). Sets:
 //  - mixed: all three bands interleaved (branch patterns of a real caller);
 //  - n>0, -1<=n<0, n<-1: one band each (Pi only: its n < 0 path has an extra atan).
+// Pi/mixed/own is ellint_pi<double> as a caller gets it: on a CPU with AVX2 and FMA its
+// double-double kernel (lib/src/math/elliptic_pi_dd.cpp), else the long-double path;
+// Pi/mixed/own-portable always times the long-double path (ellint_pi_portable). The summary
+// says which one "own" ran.
 // Pi/mixed/own-double-loop times our Pi with its duplication loop in double (see
 // pi_double_loop): what the 2-ulp accuracy costs in speed.
 // Boost takes the modulus k = sqrt(m); k is computed once, outside the timed loops.
@@ -101,7 +105,7 @@ double seconds(Clock::time_point a, Clock::time_point b) {
 
 // The functions compared, one per (integral, implementation).
 enum class Fn { kF, kPi, kRF, kRJ };
-enum class Impl { kOwn, kBoostDouble, kBoostDefault, kOwnDoubleLoop };
+enum class Impl { kOwn, kBoostDouble, kBoostDefault, kOwnDoubleLoop, kOwnPortable };
 
 // Pi as elliptic.h computes it, but with the duplication loop in double instead of long double:
 // the speed side of the accuracy trade-off (not a library function: in double the loop's
@@ -138,6 +142,8 @@ inline double eval(const Input& r) {
       return boost::math::ellint_3(r.k, r.n, r.phi, boost_double_policy());
     if constexpr (impl == Impl::kBoostDefault) return boost::math::ellint_3(r.k, r.n, r.phi);
     if constexpr (impl == Impl::kOwnDoubleLoop) return pi_double_loop(r.n, r.phi, r.m);
+    if constexpr (impl == Impl::kOwnPortable)
+      return dm::detail::ellint_pi_portable(r.n, 1.0 - r.n, r.phi, r.m, 1.0 - r.m);
   } else if constexpr (fn == Fn::kRF) {
     if constexpr (impl == Impl::kOwn) return dm::carlson_rf(r.x, r.y, r.z);
     if constexpr (impl == Impl::kBoostDouble)
@@ -197,6 +203,10 @@ void register_fn(const char* fname, Band band, const char* bname) {
 void register_benchmarks() {
   register_fn<Fn::kF>("F", Band::kMixed, "mixed");
   register_fn<Fn::kPi>("Pi", Band::kMixed, "mixed");
+  benchmark::RegisterBenchmark("Pi/mixed/own-portable", BM_Elliptic<Fn::kPi, Impl::kOwnPortable>,
+                               Band::kMixed)
+      ->UseManualTime()
+      ->Unit(benchmark::kMicrosecond);
   benchmark::RegisterBenchmark("Pi/mixed/own-double-loop",
                                BM_Elliptic<Fn::kPi, Impl::kOwnDoubleLoop>, Band::kMixed)
       ->UseManualTime()
@@ -223,6 +233,9 @@ void print_summary(const disklab::bench::Results& rows) {
         "\nTarget: own Pi <= %.2fx boost::math::ellint_3 (promote_double<false>): "
         "%.3fx on the mixed set, %s\n",
         kTargetPiRatio, ratio, ratio <= kTargetPiRatio ? "met" : "MISSED");
+    std::printf("Pi/mixed/own ran the %s path.\n", dm::detail::pi_dd_kernel_available()
+                                                       ? "double-double (AVX2+FMA)"
+                                                       : "portable long-double");
   }
 }
 

@@ -156,6 +156,11 @@ EllipticAccuracy elliptic_accuracy(const std::filesystem::path& reference_dir) {
     all.push_back(measure(f_rows, "F", name, "all rows", eval));
   for (const auto& [name, eval] : pi_impls)
     all.push_back(measure(pi_rows, "Pi", name, "all rows", eval));
+  // "own" is ellint_pi as a caller gets it (the double-double kernel on AVX2+FMA CPUs); this row
+  // holds the portable long-double path to the same table on every machine.
+  all.push_back(measure(pi_rows, "Pi", "own-portable", "all rows", [](const Row& r) {
+    return math::detail::ellint_pi_portable(r.n, 1.0 - r.n, r.phi, r.m, 1.0 - r.m);
+  }));
   for (std::size_t i = 1; i < f_impls.size(); ++i)
     all.push_back(measure(f_at_k, "F", f_impls[i].first, kSubsetAtK, f_impls[i].second));
   for (std::size_t i = 1; i < pi_impls.size(); ++i)
@@ -183,7 +188,11 @@ EllipticAccuracy elliptic_accuracy(const std::filesystem::path& reference_dir) {
      << "the complement; ours is within 2 ulp of the truth there), so it shows Boost's own "
      << "algorithmic error apart from the rounding of k; rows where k rounds to 1 are left out. "
      << "*double policy* = "
-     << "`promote_double<false>`; *default policy* computes in long double.\n\n"
+     << "`promote_double<false>`; *default policy* computes in long double. Pi *own* is "
+     << "`ellint_pi` as called (this run: "
+     << (math::detail::pi_dd_kernel_available() ? "the double-double AVX2+FMA kernel"
+                                                : "the portable long-double path")
+     << "); *own-portable* is the long-double path `ellint_pi_portable`.\n\n"
      << "| function | implementation | subset | rows | failures | max ulp | RMS ulp | rows > 2 ulp "
         "| worst input (n, phi, m) |\n|---|---|---|---:|---:|---:|---:|---:|---|\n";
   for (const Stats& s : all) {
