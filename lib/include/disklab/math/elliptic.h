@@ -44,11 +44,12 @@
 //
 // FAST PATH (Pi in double only): on x86-64 CPUs with AVX2 and FMA (checked once at run time),
 // ellint_pi<double> with m in [0, 1] and phi in (0, pi/2] runs a double-double version of the
-// same loop (lib/src/math/elliptic_pi_dd.cpp): same formulas, the same or better accuracy (max
-// 2.04 ulp, RMS 0.48 ulp on the 50-digit table, against 2.49 and 0.50 for the long-double
-// path) at about half the time (bench_elliptic: Pi/mixed/own vs Pi/mixed/own-portable).
-// Elsewhere, and for m < 0, the long-double path (ellint_pi_portable) runs. The three-argument
-// ellint_pi<double> also passes the rounding errors of 1 - n and 1 - m to it.
+// same loop (lib/src/math/elliptic_pi_dd.cpp): same formulas, the same accuracy (max 2 ulp,
+// RMS 0.546 ulp on the 50-digit table, against 2 and 0.563 for the long-double path: test_math
+// --gtest_filter='EllipticReference.Pi*') in about half the time (bench_elliptic: Pi/mixed/own
+// vs Pi/mixed/own-portable). Elsewhere, and for m < 0 or n = 0, the long-double path
+// (ellint_pi_portable) runs. The three-argument ellint_pi<double> also passes the rounding
+// errors of 1 - n and 1 - m to the kernel.
 #include <cmath>
 #include <limits>
 #include <numbers>
