@@ -370,6 +370,13 @@ extern const bool pi_dd_kernel_flag;  // the same, read without a call
 double ellint_pi_dd(double n, double one_minus_n, double one_minus_n_lo, double phi, double m,
                     double one_minus_m, double one_minus_m_lo) noexcept;
 
+// The rounding error of one_minus_x = fl(1 - x), exactly: (1 - x) - one_minus_x (Knuth's
+// two-sum error of 1 + (-x)).
+inline double complement_error(double x, double one_minus_x) {
+  const double bb = one_minus_x - 1.0;
+  return (1.0 - (one_minus_x - bb)) + (-x - bb);
+}
+
 // Whether the kernel covers these (already validated, phi in [0, pi/2]) arguments. n = 0 stays
 // on the portable path, which answers it with F itself (Pi(0; phi|m) == F(phi|m) exactly).
 inline bool pi_dd_covers(double n, double one_minus_n, double phi, double m) {
@@ -479,13 +486,9 @@ inline Real ellint_pi(Real n, Real phi, Real m) {
     // The fast path takes the complements exactly (their rounding errors as lo parts, Knuth's
     // two-sum); for large |n| the rounding of 1 - n alone would be half an ulp of the result.
     if (m <= 1 && n <= 1 && detail::in_phi_domain(phi)) {
-      auto two_sum_error = [](double a, double b, double sum) {
-        const double bb = sum - a;
-        return (a - (sum - bb)) + (b - bb);
-      };
       const double omn = 1 - n, omm = 1 - m;
-      return detail::ellint_pi_core(n, omn, phi, m, omm, two_sum_error(1.0, -n, omn),
-                                    two_sum_error(1.0, -m, omm));
+      return detail::ellint_pi_core(n, omn, phi, m, omm, detail::complement_error(n, omn),
+                                    detail::complement_error(m, omm));
     }
   }
   return ellint_pi(n, Real(1 - n), phi, m, Real(1 - m));
