@@ -14,6 +14,7 @@
 #include <numbers>
 
 #include "disklab/math/elliptic.h"
+#include "math/elliptic_domain.h"
 
 namespace disklab::test {
 namespace {
@@ -23,7 +24,7 @@ using boost_double_policy =
     boost::math::policies::policy<boost::math::policies::promote_double<false>>;
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
-constexpr double kHalfPi = 1.5707963267948966;  // fl(pi/2) < pi/2
+using elliptic_domain::kHalfPi;
 
 // --- Tolerances (one place for this suite) ---------------------------------------------------
 // Own vs Boost where Boost is well conditioned (k <= 0.95, -100 <= n <= 0.9; Boost forms 1 - k^2
@@ -45,28 +46,23 @@ double rel_diff(double a, double b) {
   return std::fabs(a - b) / std::fabs(b);
 }
 
-// Generators over the domain (and its hard corners).
+// Generators over the domain and its hard corners (the maps of elliptic_domain.h).
 rc::Gen<double> gen_unit() {  // [0, 1)
   return rc::gen::map(rc::gen::inRange<int64_t>(0, int64_t(1) << 53),
                       [](int64_t i) { return std::ldexp(double(i), -53); });
 }
+template <class Map>
+rc::Gen<double> gen_kinds(int kinds, Map map) {
+  return rc::gen::apply(map, rc::gen::inRange(0, kinds), gen_unit());
+}
 rc::Gen<double> gen_phi() {
-  return rc::gen::oneOf(
-      rc::gen::map(gen_unit(), [](double u) { return kHalfPi * u; }),
-      rc::gen::map(gen_unit(), [](double u) { return kHalfPi - std::pow(10.0, -16 * u); }),
-      rc::gen::map(gen_unit(), [](double u) { return std::pow(10.0, -12 * u); }));
+  return gen_kinds(elliptic_domain::kPhiKinds, elliptic_domain::phi);
 }
-rc::Gen<double> gen_m() {  // m in [0, 1) including m -> 1 with exact 1 - m
-  return rc::gen::oneOf(
-      gen_unit(), rc::gen::map(gen_unit(), [](double u) {
-        return 1.0 -
-               std::ldexp(std::max(1.0, std::round(std::ldexp(std::pow(2.0, -53 * u), 53))), -53);
-      }));
+rc::Gen<double> gen_m() {
+  return gen_kinds(elliptic_domain::kMKinds, elliptic_domain::m);
 }
-rc::Gen<double> gen_n() {  // n < 1: (-1, 1), down to -1e16, and n -> 1
-  return rc::gen::oneOf(rc::gen::map(gen_unit(), [](double u) { return 2 * u - 1; }),
-                        rc::gen::map(gen_unit(), [](double u) { return -std::pow(10.0, 16 * u); }),
-                        gen_m());
+rc::Gen<double> gen_n() {
+  return gen_kinds(elliptic_domain::kNKinds, elliptic_domain::n);
 }
 
 RC_GTEST_PROP(EllipticProperty, AgreesWithBoostBothPolicies, ()) {

@@ -10,6 +10,8 @@
 #include <optional>
 
 #include "disklab/math/elliptic.h"
+#include "disklab/sequence/random.h"
+#include "math/elliptic_domain.h"
 #include "math/elliptic_tables.h"
 
 namespace disklab::test {
@@ -132,6 +134,104 @@ TEST(EllipticReference, PiDoubleDoubleKernelWithinTwoUlpOfTable) {
   });
   // The kernel's domain covers most of the table.
   EXPECT_GT(stats.count, read_elliptic_table("elliptic_pi.csv", 3).size() / 2);
+}
+
+// The 2-ulp target away from the table's rows: a fixed pseudo-random sweep over the domain's
+// corners (elliptic_domain.h: phi -> pi/2 and -> 0, m -> 1, n -> 1 and n down to -1e16), every
+// Pi path and F against the same integrals evaluated by our templates in cpp_bin_float_50
+// (Carlson, checked against the independent tables by the test below). The corners are where
+// rounding s, c, R_C or the atan term to double once costs 3-4 ulp; the table's 2130 rows
+// happened to miss them.
+TEST(EllipticReference, PiAndFWithinTwoUlpOf50DigitsAtCorners) {
+  namespace dom = elliptic_domain;
+  constexpr int kSamples = 9000;  // 500 per (phi, m, n) corner combination
+  sequence::Pcg32 rng(2026, 4);
+  const bool kernel = math::detail::pi_dd_kernel_available();
+  UlpStats pi_stats, portable_stats, f_stats;
+  auto check = [](UlpStats& stats, const char* label, double own, double ref,
+                  const std::string& where) {
+    const int64_t d = ulp_distance(own, ref);
+    stats.add(d, where);
+    EXPECT_LE(std::llabs(d), kMaxUlp) << label << ": " << where << " own=" << own;
+  };
+  for (int i = 0; i < kSamples; ++i) {
+    const int kinds = i % (dom::kPhiKinds * dom::kMKinds * dom::kNKinds);
+    const double phi = dom::phi(kinds % dom::kPhiKinds, rng.next_double());
+    const double m = dom::m(kinds / dom::kPhiKinds % dom::kMKinds, rng.next_double());
+    const double n = dom::n(kinds / (dom::kPhiKinds * dom::kMKinds), rng.next_double());
+    char where[128];
+    std::snprintf(where, sizeof where, "n=%.17g phi=%.17g m=%.17g", n, phi, m);
+    const double pi_ref = static_cast<double>(math::ellint_pi(Real50(n), Real50(phi), Real50(m)));
+    check(pi_stats, kernel ? "Pi (double-double kernel)" : "Pi", math::ellint_pi(n, phi, m), pi_ref,
+          where);
+    check(portable_stats, "Pi (portable)",
+          math::detail::ellint_pi_portable(n, 1.0 - n, phi, m, 1.0 - m), pi_ref, where);
+    if (kinds / (dom::kPhiKinds * dom::kMKinds) == 0)  // F once per (phi, m) sample
+      check(f_stats, "F", math::ellint_f(phi, m),
+            static_cast<double>(math::ellint_f(Real50(phi), Real50(m))), where);
+  }
+  std::printf(
+      "Corner sweep vs 50 digits: Pi (%s) max %lld ulp RMS %.3f; Pi (portable) max %lld "
+      "ulp RMS %.3f; F max %lld ulp RMS %.3f (%zu/%zu/%zu samples)\n",
+      kernel ? "kernel" : "portable", (long long)pi_stats.max, pi_stats.rms(),
+      (long long)portable_stats.max, portable_stats.rms(), (long long)f_stats.max, f_stats.rms(),
+      pi_stats.count, portable_stats.count, f_stats.count);
+}
+
+// The kernel's double-double elementary functions (elliptic_pi_dd.cpp) against cpp_bin_float_50.
+// Their error enters Pi once, scaled by at most ~1 (no cancellation between Pi's terms), so each
+// must stay well under a correctly rounded double's 2^-53. Bounds from their error analysis (the
+// measured maxima are printed): atan, log and R_C carry only first-order corrections and series
+// tails below 2^-58, so 2^-55; sin and cos round their Taylor correction (at most 0.103 of the
+// value at |t| = pi/4) three times, 0.31 * 2^-53 < 2^-54.
+TEST(EllipticReference, KernelElementaryFunctionsWithin2em55Of50Digits) {
+  if (!math::detail::pi_dd_kernel_available())
+    GTEST_SKIP() << "this CPU lacks AVX2/FMA: the kernel and its functions are not used";
+  namespace dom = elliptic_domain;
+  using DDv = math::detail::DoubleDouble;
+  const Real50 kBound = Real50(std::ldexp(1.0, -55)), kSinCosBound = Real50(std::ldexp(1.0, -54));
+  auto value = [](DDv x) { return Real50(x.hi) + Real50(x.lo); };
+  auto rel = [](const Real50& got, const Real50& ref) { return Real50(abs((got - ref) / ref)); };
+  sequence::Pcg32 rng(2026, 5);
+  Real50 worst_sc = 0, worst_atan = 0, worst_log = 0, worst_rc = 0;
+  for (int i = 0; i < 3000; ++i) {
+    // sin, cos of phi in [0, pi/2] (phi > 0: the kernel's domain), corners included.
+    const double phi = dom::phi(i % dom::kPhiKinds, rng.next_double());
+    if (phi > 0) {
+      DDv s, c;
+      math::detail::pi_dd_sincos(phi, s, c);
+      const Real50 es = rel(value(s), sin(Real50(phi))), ec = rel(value(c), cos(Real50(phi)));
+      worst_sc = std::max(worst_sc, std::max(es, ec));
+      EXPECT_LE(std::max(es, ec), kSinCosBound) << "sincos phi=" << phi;
+    }
+    // atan of x = 10^(-8..8) carrying a lo part.
+    const double xh = std::pow(10.0, 16 * rng.next_double() - 8);
+    const DDv x = {xh, xh * 0x1p-54 * (2 * rng.next_double() - 1)};
+    const Real50 ea = rel(value(math::detail::pi_dd_atan(x)), atan(value(x)));
+    worst_atan = std::max(worst_atan, ea);
+    EXPECT_LE(ea, kBound) << "atan x=" << xh;
+    // log of x in [1 + 2^-40, 1e9] (the kernel's (1 + r)/(1 - r), r in [0.1, 1)).
+    const double yh = 1 + std::pow(10.0, 21 * rng.next_double() - 12);
+    const DDv y = {yh, yh * 0x1p-54 * (2 * rng.next_double() - 1)};
+    const Real50 el = rel(value(math::detail::pi_dd_log(y)), log(value(y)));
+    worst_log = std::max(worst_log, el);
+    EXPECT_LE(el, kBound) << "log x=" << yh;
+    // R_C(1, 1 + e) - 1 for e in +-[0.01, 1) and e -> -1, error relative to R_C.
+    const double u = rng.next_double();
+    const double e = i % 3 == 0   ? 0.01 + 0.99 * u
+                     : i % 3 == 1 ? -0.01 - 0.99 * u
+                                  : -(1 - std::pow(10.0, -8 * u));
+    const Real50 E(e), r = sqrt(abs(E));
+    const Real50 rc = e > 0 ? Real50(atan(r) / r) : Real50(atanh(r) / r);
+    const Real50 er = abs((value(math::detail::pi_dd_rc_minus_1({e, 0})) + 1 - rc) / rc);
+    worst_rc = std::max(worst_rc, er);
+    EXPECT_LE(er, kBound) << "R_C e=" << e;
+  }
+  std::printf(
+      "kernel functions, max relative error: sincos %.2g, atan %.2g, log %.2g, R_C %.2g "
+      "(bounds 2^-54, 2^-55 = %.2g)\n",
+      double(worst_sc), double(worst_atan), double(worst_log), double(worst_rc),
+      std::ldexp(1.0, -55));
 }
 
 // The same templates in cpp_bin_float_50: proves they run at high precision and checks

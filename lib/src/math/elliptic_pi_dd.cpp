@@ -9,6 +9,13 @@
 // d_k) reach 4 ulp on the 50-digit tables; the portable path carries the loop in x87 long double,
 // whose square roots and divisions are slow. Here every quantity of the loop is a pair hi + lo
 // (|lo| ~ ulp(hi)) updated with error-free transformations (FMA products, two-sums).
+// Three more inputs are kept in double-double, because at the domain's corners (phi -> pi/2
+// with m, n -> 1) each alone costs up to 3-4 ulp when rounded to double (measured against
+// 50-digit Carlson on random samples, EllipticProperty.PiWithinTwoUlpOf50Digits):
+//  - s = sin(phi) and c = cos(phi) (sincos_dd, instead of libm's correctly rounded doubles);
+//  - R_C(1, 1 + e_k) where |e_k| >= 0.01 (the first duplication step), by closed forms in
+//    double-double (atan_dd, log_dd), and e_k from delta formed of double-double differences;
+//  - the atan term of n < 0 (atan_dd).
 //
 // Speed design (measured: bench_elliptic, Pi/mixed):
 //  - the four arguments (x, y, z, p) of a duplication step sit in one AVX2 register: one vector
@@ -50,6 +57,10 @@ DL_INLINE DD two_prod(double a, double b) {  // exact: a b = p + e (FMA)
   const double p = a * b;
   return {p, std::fma(a, b, -p)};
 }
+DL_INLINE DD normalize(DD a) {  // |lo| <= ulp(hi)/2 again (after a cancellation, say)
+  const double s = a.h + a.l;
+  return {s, a.l - (s - a.h)};
+}
 DL_INLINE DD add(DD a, DD b) {
   const DD s = two_sum(a.h, b.h);
   return {s.h, s.l + (a.l + b.l)};
@@ -75,6 +86,153 @@ DL_INLINE DD sqrt_dd(DD a) {  // sqrt(a), a > 0: h + (a - h^2) / (2h)
 }
 DL_INLINE double value(DD a) {
   return a.h + a.l;
+}
+
+// sin and cos of phi in [0, pi/2] as double-doubles: relative error below 2^-54 (three roundings
+// of a Taylor correction at most 0.103 of the value), a third of a correctly rounded double's
+// worst case, and far less where it matters (phi -> pi/2: c = sin t with t tiny). phi > pi/4 is
+// reduced exactly to t = pi/2 - phi (Sterbenz: pi/2 - phi is exact there; pi/2's tail is added as
+// t's lo part), then sin and cos swap. Both are Taylor series on |t| <= pi/4 (A&S 4.3.65-66) up to
+// t^17 and t^16 (first omitted terms below 2^-58 relative), evaluated by Estrin's scheme in u = t^2
+// (shorter latency than Horner).
+constexpr DD kHalfPi = {0x1.921fb54442d18p+0, 0x1.1a62633145c07p-54};
+
+DL_INLINE void sincos_dd(double phi, DD& sin_phi, DD& cos_phi) {
+  const bool reflect = phi > 0.5 * kHalfPi.h;
+  const double d = reflect ? kHalfPi.h - phi : phi;  // exact
+  const DD t = two_sum(d, reflect ? kHalfPi.l : 0.0);
+  const double u = t.h * t.h, u2 = u * u, u4 = u2 * u2;
+  // sin t = t + t^3 S(u), S = sum_k (-1)^(k+1) u^k / (2k+3)!, k = 0..7.
+  constexpr double s0 = -1.0 / 6, s1 = 1.0 / 120, s2 = -1.0 / 5040, s3 = 1.0 / 362880,
+                   s4 = -1.0 / 39916800, s5 = 1.0 / 6227020800, s6 = -1.0 / 1307674368000,
+                   s7 = 1.0 / 355687428096000;
+  const double S = (std::fma(s1, u, s0) + u2 * std::fma(s3, u, s2)) +
+                   u4 * (std::fma(s5, u, s4) + u2 * std::fma(s7, u, s6));
+  // cos t = 1 - u/2 + u^2 C(u), C = sum_k (-1)^k u^k / (2k+4)!, k = 0..6.
+  constexpr double c0 = 1.0 / 24, c1 = -1.0 / 720, c2 = 1.0 / 40320, c3 = -1.0 / 3628800,
+                   c4 = 1.0 / 479001600, c5 = -1.0 / 87178291200, c6 = 1.0 / 20922789888000;
+  const double C =
+      (std::fma(c1, u, c0) + u2 * std::fma(c3, u, c2)) + u4 * (std::fma(c5, u, c4) + u2 * c6);
+  // sin(t_h + t_l) = sin t_h + t_l cos t_h, |t_l| <= 2^-53 |t_h|: cos t_h ~ 1 - u/2 suffices.
+  const DD sn = two_sum(t.h, std::fma(t.h * u, S, t.l * (1 - 0.5 * u)));
+  // cos: 1 - u/2 with u = t_h^2 exact (two_prod); cos(t_h + t_l) = cos t_h - t_l t_h.
+  const DD uu = two_prod(t.h, t.h);
+  const DD one_minus = two_sum(1.0, -0.5 * uu.h);
+  const DD cs = two_sum(one_minus.h, one_minus.l - 0.5 * uu.l + std::fma(u2, C, -t.l * t.h));
+  sin_phi = reflect ? cs : sn;
+  cos_phi = reflect ? sn : cs;
+}
+
+// atan(x) for a double-double x >= 0, as a double-double (relative error ~2^-60). x > 1 is
+// reflected, atan x = pi/2 - atan(1/x); then atan r = atan(a) + atan(u) with a = j/8 the
+// nearest eighth and u = (r - a)/(1 + r a), |u| <= 1/16, where the Taylor series through u^13
+// leaves below 2^-59 relative. atan(j/8) as double-doubles (mpmath, 200 bits).
+constexpr DD kAtanEighths[9] = {{0x0.0p+0, 0x0.0p+0},
+                                {0x1.fd5ba9aac2f6ep-4, -0x1.cd37686760c17p-59},
+                                {0x1.f5b75f92c80ddp-3, 0x1.8ab6e3cf7afbdp-57},
+                                {0x1.6f61941e4def1p-2, -0x1.c63aae6f6e918p-56},
+                                {0x1.dac670561bb4fp-2, 0x1.a2b7f222f65e2p-56},
+                                {0x1.1e00babdefeb4p-1, -0x1.928df287a668fp-58},
+                                {0x1.4978fa3269ee1p-1, 0x1.2419a87f2a458p-56},
+                                {0x1.700a7c5784634p-1, -0x1.8c34d25aadef6p-56},
+                                {0x1.921fb54442d18p-1, 0x1.1a62633145c07p-55}};
+
+DL_INLINE DD atan_dd(DD x) {
+  const bool reflect = x.h > 1;
+  const double inv = 1 / x.h;
+  const DD r = reflect ? DD{inv, (std::fma(-x.h, inv, 1.0) - x.l * inv) * inv} : x;
+  const int j = static_cast<int>(r.h * 8 + 0.5);  // r.h in [0, 1]: j in 0..8
+  const double a = j * 0.125;
+  const double num = r.h - a;  // exact (Sterbenz for j >= 1; a = 0 otherwise)
+  const DD ra = two_prod(r.h, a);
+  const DD den = two_sum(1.0, ra.h);
+  const double den_l = den.l + ra.l + r.l * a;
+  const double inv_den = 1 / den.h;
+  const double uh = num * inv_den;
+  const double ul = (std::fma(-uh, den.h, num) + r.l - uh * den_l) * inv_den;
+  const double v = uh * uh, v2 = v * v;
+  // atan u = u + u^3 P(v), P = sum_k (-1)^(k+1) v^k / (2k+3), k = 0..5.
+  const double P = (std::fma(1.0 / 5, v, -1.0 / 3) + v2 * std::fma(1.0 / 9, v, -1.0 / 7)) +
+                   v2 * v2 * std::fma(1.0 / 13, v, -1.0 / 11);
+  const DD base = kAtanEighths[j];
+  const DD hs = two_sum(base.h, uh);
+  const DD res = {hs.h, hs.l + base.l + std::fma(uh * v, P, ul)};
+  const DD d = two_sum(kHalfPi.h, -res.h);
+  return reflect ? DD{d.h, d.l + kHalfPi.l - res.l} : res;
+}
+
+// log(x) for a double-double x >= 1, as a double-double (relative error ~2^-60): x = 2^k f,
+// f in [1, 2); log f = log a + 2 atanh(u) with a = 1 + j/16 the nearest sixteenth and
+// u = (f - a)/(f + a), |u| <= 1/65, where atanh's series through u^9 leaves below 2^-63.
+// log(1 + j/16) as double-doubles (mpmath, 200 bits); ln 2's head has 42 bits, so k ln2_hi is
+// exact for the k < 2^11 met here.
+constexpr DD kLogSixteenths[17] = {{0x0.0p+0, 0x0.0p+0},
+                                   {0x1.f0a30c01162a6p-5, 0x1.85f325c5bbacdp-59},
+                                   {0x1.e27076e2af2e6p-4, -0x1.61578001e0162p-60},
+                                   {0x1.5ff3070a793d4p-3, -0x1.bc60efafc6f6ep-58},
+                                   {0x1.c8ff7c79a9a22p-3, -0x1.4f689f8434012p-57},
+                                   {0x1.1675cababa60ep-2, 0x1.ce63eab883717p-61},
+                                   {0x1.4618bc21c5ec2p-2, 0x1.f42decdeccf1dp-56},
+                                   {0x1.739d7f6bbd007p-2, -0x1.8c76ceb014b04p-56},
+                                   {0x1.9f323ecbf984cp-2, -0x1.a92e513217f5cp-59},
+                                   {0x1.c8ff7c79a9a22p-2, -0x1.4f689f8434012p-56},
+                                   {0x1.f128f5faf06edp-2, -0x1.328df13bb38c3p-56},
+                                   {0x1.0be72e4252a83p-1, -0x1.259da11330801p-55},
+                                   {0x1.1e85f5e7040d0p-1, 0x1.ef62cd2f9f1e3p-56},
+                                   {0x1.307d7334f10bep-1, 0x1.fb590a1f566dap-57},
+                                   {0x1.41d8fe84672aep-1, 0x1.9192f30bd1806p-55},
+                                   {0x1.52a2d265bc5abp-1, -0x1.1883750ea4d0ap-57},
+                                   {0x1.62e42fefa39efp-1, 0x1.abc9e3b39803fp-56}};
+constexpr DD kLn2 = {0x1.62e42fefa3800p-1, 0x1.ef35793c76730p-45};
+
+DL_INLINE DD log_dd(DD x) {
+  x = normalize(x);  // the first-order u below needs |x.l| ~ ulp(x.h)
+  int k;
+  const double fh = 2 * std::frexp(x.h, &k);  // x.h = fh 2^(k-1), fh in [1, 2)
+  --k;
+  const double fl = std::ldexp(x.l, -k);
+  const int j = static_cast<int>((fh - 1) * 16 + 0.5);
+  const double a = 1 + j * 0.0625;
+  const double num = fh - a;  // exact (Sterbenz)
+  const DD den = two_sum(fh, a);
+  const double inv_den = 1 / den.h;
+  const double uh = num * inv_den;
+  const double ul = (std::fma(-uh, den.h, num) + fl - uh * (den.l + fl)) * inv_den;
+  const double v = uh * uh;
+  const double P = std::fma(v, std::fma(v, std::fma(v, 1.0 / 9, 1.0 / 7), 1.0 / 5), 1.0 / 3);
+  const DD base = add(DD{k * kLn2.h, k * kLn2.l}, kLogSixteenths[j]);
+  const DD hs = two_sum(base.h, 2 * uh);
+  return {hs.h, hs.l + base.l + 2 * std::fma(uh * v, P, ul)};
+}
+
+// R_C(1, 1 + e) - 1 for |e| >= 0.01 in double-double (DLMF 19.2.8-9: atan(r)/r with r = sqrt(e)
+// for e > 0, atanh(r)/r = log((1 + r)/(1 - r))/(2r) with r = sqrt(-e) for e < 0; |e| < 1 for
+// the duplication's e_k). Only the first duplication steps reach it; in double the closed forms'
+// rounding (1 ulp of R_C) alone costs the final result up to 3 ulp at the domain's corners.
+__attribute__((noinline, target("avx2,fma"))) DD rc_minus_1_large(DD e) {
+  if (e.h > 0) {
+    const DD r = sqrt_dd(e);
+    const DD at = atan_dd(r);
+    return mul(add(at, DD{-r.h, -r.l}), recip(r));
+  }
+  const DD r = sqrt_dd(DD{-e.h, -e.l});
+  // 1 - r is exact in its hi part (Sterbenz), so its lo is r's: renormalised for recip.
+  const DD ratio = mul(add(DD{1, 0}, r), recip(normalize(add(DD{1, 0}, DD{-r.h, -r.l}))));
+  const DD lg = log_dd(ratio);  // 2 atanh(r)
+  return add(mul(lg, recip(scale(r, 2))), DD{-1, 0});
+}
+
+// R_C(1, 1 + e) - 1 by its Maclaurin series in e (DLMF 19.2.8's atan(r)/r = sum (-e)^k/(2k+1))
+// for |e| < 0.01, without the leading 1 (so it carries no rounding of 1): ten terms (the first
+// omitted one, e^10/21, is below 2^-70 relative to 1), five below |e| = 2e-4.
+DL_INLINE double rc_minus_1_small(double e) {
+  const double e2 = e * e;
+  if (std::fabs(e) < 2e-4)
+    return e * (std::fma(e, 1.0 / 5, -1.0 / 3) + e2 * std::fma(e, 1.0 / 9, -1.0 / 7));
+  const double e4 = e2 * e2;
+  return e * ((std::fma(e, 1.0 / 5, -1.0 / 3) + e2 * std::fma(e, 1.0 / 9, -1.0 / 7)) +
+              e4 * (std::fma(e, 1.0 / 13, -1.0 / 11) + e2 * std::fma(e, 1.0 / 17, -1.0 / 15) +
+                    e4 * std::fma(e, 1.0 / 21, -1.0 / 19)));
 }
 
 constexpr DD kThird = {0x1.5555555555555p-2, 0x1.5555555555555p-56};   // 1/3 to 2^-107
@@ -119,15 +277,19 @@ constexpr int lanes(int l0, int l1, int l2, int l3) {
 // R_F(c^2, Delta^2, 1) and R_J(c^2, Delta^2, 1, p) (DLMF 19.36.1-2), as in rf_rj_loop of
 // elliptic.h (same stopping rule and degree-7 tails), in double-double. Requires c > 0,
 // Delta^2 > 0, p > 0 (the Legendre arguments at phi in (0, pi/2]).
-DL_TARGET void rf_rj_dd(double c, DD delta2, DD p, DD& rf, DD& rj) {
-  const DD x = two_prod(c, c);
+DL_TARGET void rf_rj_dd(DD c, DD delta2, DD p, DD& rf, DD& rj) {
+  const DD x = mul(c, c);
   DD4 v = {_mm256_setr_pd(x.h, delta2.h, 1.0, p.h), _mm256_setr_pd(x.l, delta2.l, 0.0, p.l)};
   // Stopping rule and tail inputs from the hi parts, as in the portable loop: the tails need a
   // few correct digits only (they are below tol^2 = 1e-4).
   const double x0 = x.h, y0 = delta2.h, p0 = p.h;
   double AF = (x0 + y0 + 1) * (1.0 / 3), AJ = (x0 + y0 + 1 + 2 * p0) * 0.2;
   const double dFx = AF - x0, dFy = AF - y0, dJx = AJ - x0, dJy = AJ - y0, dJz = AJ - 1;
-  const double delta = (p0 - x0) * (p0 - y0) * (p0 - 1);
+  // delta = (p - x)(p - y)(p - z) from the double-double arguments (their differences keep
+  // their relative accuracy where p is close to x or y); e_k below inherits it.
+  const DD p_x = add(p, DD{-x.h, -x.l}), p_y = add(p, DD{-delta2.h, -delta2.l}),
+           p_z = add(p, DD{-1, 0});
+  const double delta = p_x.h * p_y.h * p_z.h;
   const double inv_tol = 1 / duplication_tolerance<double>();
   double qF = std::max(std::fabs(dFx), std::max(std::fabs(dFy), std::fabs(AF - 1))) * inv_tol;
   double qJ = std::max(std::max(std::fabs(dJx), std::fabs(dJy)),
@@ -146,14 +308,18 @@ DL_TARGET void rf_rj_dd(double c, DD delta2, DD p, DD& rf, DD& rj) {
     const DD4 w = add(s, permute<lanes(3, 3, 3, 3)>(s));
     const DD4 d4 = mul(mul(w, permute<lanes(1, 3, 3, 3)>(w)), permute<lanes(2, 3, 3, 3)>(w));
     const DD lambda = lane0(lam), d = lane0(d4);
-    const double sp = _mm256_cvtsd_f64(_mm256_permute4x64_pd(s.h, lanes(3, 3, 3, 3)));
-    const double ph = _mm256_cvtsd_f64(_mm256_permute4x64_pd(v.h, lanes(3, 3, 3, 3)));
     const DD inv_d = recip(d);
     // e_k and 1 + e_k as in rf_rj_loop; R_C(1, 1 + e) = 1 + (R_C - 1) keeps the leading 1 exact.
+    // e_k = 4^-3k delta / d_k^2 (DLMF 19.36.2); its R_C term as inv_d (1 + (R_C - 1)).
     const double e = scale3_k * delta * inv_d.h * inv_d.h;
-    const double one_plus_e = 2 * sp * (ph + lambda.h) * inv_d.h;
-    const double rc_minus_1 = rc_one_one_plus<double, double>(e, one_plus_e) - 1;
-    sum = add(sum, scale(add(inv_d, two_prod(inv_d.h, rc_minus_1)), scale_k));
+    DD term;
+    if (std::fabs(e) < 0.01) {
+      term = add(inv_d, two_prod(inv_d.h, rc_minus_1_small(e)));
+    } else {
+      const DD e_dd = scale(mul(mul(mul(p_x, p_y), p_z), mul(inv_d, inv_d)), scale3_k);
+      term = add(inv_d, mul(inv_d, rc_minus_1_large(e_dd)));
+    }
+    sum = add(sum, scale(term, scale_k));
     v = quarter(add(v, lam));
     AF = (AF + lambda.h) * 0.25;
     AJ = (AJ + lambda.h) * 0.25;
@@ -192,8 +358,9 @@ DL_TARGET void rf_rj_dd(double c, DD delta2, DD p, DD& rf, DD& rj) {
 }
 
 DL_TARGET double pi_dd(double n, DD omn, double phi, double m, DD omm) {
-  const double s = std::sin(phi), c = std::cos(phi);
-  const DD s2 = two_prod(s, s), c2 = two_prod(c, c);
+  DD s, c;
+  sincos_dd(phi, s, c);
+  const DD s2 = mul(s, s), c2 = mul(c, c);
   // Delta^2 = 1 - m s^2 = c^2 + (1 - m) s^2 (the second form where the first cancels).
   const DD delta2 = m <= 0.5 ? add(DD{1, 0}, mul(s2, -m)) : add(c2, mul(s2, omm));
   const DD s3 = mul(s2, s);
@@ -212,9 +379,8 @@ DL_TARGET double pi_dd(double n, DD omn, double phi, double m, DD omm) {
   const DD k1 = mul(inv_omn, s);
   const DD kj = mul(mul(w, omN), mul(s3, kThird));
   const DD g = sqrt_dd(mul(w, mn));  // sqrt(-n (m - n)/(1 - n))
-  const DD arg = mul(mul(g, two_prod(s, c)), recip(sqrt_dd(delta2)));
-  // The atan term carries double atan's error (<= 1 ulp of that term), as on the portable path.
-  const DD term_atan = mul(mul(g, recip(mn)), std::atan(value(arg)));
+  const DD arg = mul(mul(g, mul(s, c)), recip(sqrt_dd(delta2)));
+  const DD term_atan = mul(mul(g, recip(mn)), atan_dd(arg));
   rf_rj_dd(c, delta2, pN, rf, rj);
   return value(add(add(mul(rf, k1), mul(rj, kj)), term_atan));
 }
@@ -237,6 +403,25 @@ double ellint_pi_dd(double n, double one_minus_n, double one_minus_n_lo, double 
   return pi_dd(n, DD{one_minus_n, one_minus_n_lo}, phi, m, DD{one_minus_m, one_minus_m_lo});
 }
 
+DL_TARGET void pi_dd_sincos(double phi, DoubleDouble& sin_phi, DoubleDouble& cos_phi) noexcept {
+  DD s, c;
+  sincos_dd(phi, s, c);
+  sin_phi = {s.h, s.l};
+  cos_phi = {c.h, c.l};
+}
+DL_TARGET DoubleDouble pi_dd_atan(DoubleDouble x) noexcept {
+  const DD r = atan_dd(DD{x.hi, x.lo});
+  return {r.h, r.l};
+}
+DL_TARGET DoubleDouble pi_dd_log(DoubleDouble x) noexcept {
+  const DD r = log_dd(DD{x.hi, x.lo});
+  return {r.h, r.l};
+}
+DL_TARGET DoubleDouble pi_dd_rc_minus_1(DoubleDouble e) noexcept {
+  const DD r = rc_minus_1_large(DD{e.hi, e.lo});
+  return {r.h, r.l};
+}
+
 #else  // no x86-64 AVX2 kernel in this build: the portable path is always used
 
 const bool pi_dd_kernel_flag = false;
@@ -246,6 +431,20 @@ bool pi_dd_kernel_available() noexcept {
 
 double ellint_pi_dd(double, double, double, double, double, double, double) noexcept {
   return std::numeric_limits<double>::quiet_NaN();
+}
+
+// Never called without the kernel (the tests check pi_dd_kernel_available() first).
+void pi_dd_sincos(double, DoubleDouble& s, DoubleDouble& c) noexcept {
+  s = c = {std::numeric_limits<double>::quiet_NaN(), 0};
+}
+DoubleDouble pi_dd_atan(DoubleDouble) noexcept {
+  return {std::numeric_limits<double>::quiet_NaN(), 0};
+}
+DoubleDouble pi_dd_log(DoubleDouble) noexcept {
+  return {std::numeric_limits<double>::quiet_NaN(), 0};
+}
+DoubleDouble pi_dd_rc_minus_1(DoubleDouble) noexcept {
+  return {std::numeric_limits<double>::quiet_NaN(), 0};
 }
 
 #endif

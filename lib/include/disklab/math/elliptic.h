@@ -44,12 +44,15 @@
 //
 // FAST PATH (Pi in double only): on x86-64 CPUs with AVX2 and FMA (checked once at run time),
 // ellint_pi<double> with m in [0, 1] and phi in (0, pi/2] runs a double-double version of the
-// same loop (lib/src/math/elliptic_pi_dd.cpp): same formulas, the same accuracy (max 2 ulp,
-// RMS 0.546 ulp on the 50-digit table, against 2 and 0.563 for the long-double path: test_math
-// --gtest_filter='EllipticReference.Pi*') in about half the time (bench_elliptic: Pi/mixed/own
-// vs Pi/mixed/own-portable). Elsewhere, and for m < 0 or n = 0, the long-double path
-// (ellint_pi_portable) runs. The three-argument ellint_pi<double> also passes the rounding
-// errors of 1 - n and 1 - m to the kernel.
+// same loop (lib/src/math/elliptic_pi_dd.cpp), which also carries s, c, the first steps' R_C and
+// the atan term in double-double. Elsewhere, and for m < 0 or n = 0, the long-double path
+// (ellint_pi_portable) runs, with s, c, R_C and atan in long double. Rounding any of those to
+// double costs up to 3 ulp at the domain's corners (phi -> pi/2 with m, n -> 1). Both paths:
+// max 1 ulp on the 50-digit table and on a 9000-sample corner sweep against 50-digit Carlson
+// (RMS 0.09 / 0.08 ulp kernel, 0.24 / 0.06 portable): test_math
+// --gtest_filter='EllipticReference.Pi*'. Speed: bench_elliptic, Pi/mixed/own vs own-portable.
+// The three-argument ellint_pi<double> also passes the rounding errors of 1 - n and 1 - m to
+// the kernel.
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -91,7 +94,8 @@ inline Real quiet_nan() {
 // forms 1 + t without cancellation): atan(sqrt t)/sqrt t for t > 0, atanh(sqrt -t)/sqrt -t for
 // t < 0, or the series sum_k (-t)^k / (2k + 1) when |t| is small (DLMF 19.2.19-20, x = 1).
 // Near t = -1, atanh(r) = log((1 + r)/sqrt(1 + t)): 1 - r would cancel, 1 + t does not.
-// The series runs in W; the closed forms in Real (double's atan/log, accurate to ~1 ulp).
+// All in W: for Real = double the closed forms in long double, because their double rounding
+// (1 ulp of R_C) reaches the result at the domain's corners (3 ulp measured, see FAST PATH).
 template <class Real, class W>
 inline W rc_one_one_plus(W t, W one_plus_t) {
   using std::abs;
@@ -112,14 +116,13 @@ inline W rc_one_one_plus(W t, W one_plus_t) {
       sum = W(1) / (2 * k + 1) - t * sum;
     return sum;
   }
-  const Real tr = static_cast<Real>(t);
-  if (tr > 0) {
-    const Real r = sqrt(tr);
-    return W(atan(r) / r);
+  if (t > 0) {
+    const W r = sqrt(t);
+    return atan(r) / r;
   }
-  const Real r = sqrt(-tr);
-  if (r < Real(0.5)) return W(atanh(r) / r);
-  return W(log((1 + r) / sqrt(static_cast<Real>(one_plus_t))) / r);
+  const W r = sqrt(-t);
+  if (r < W(0.5)) return atanh(r) / r;
+  return log((1 + r) / sqrt(one_plus_t)) / r;
 }
 
 // Degree-7 tail of R_F, DLMF 19.36.1, without its leading 1: R_F = A^-1/2 (1 + tail), where
@@ -328,13 +331,13 @@ struct LegendreArgs {
   W s, c, c2, delta2;
 };
 
-template <class Real, class W = work_t<Real>>
+template <class Real, class W = work_t<Real>, bool kWideSinCos = false>
 inline LegendreArgs<W> legendre_args(Real phi, Real m, Real one_minus_m) {
   using std::cos;
   using std::sin;
   LegendreArgs<W> a;
-  a.s = W(sin(phi));
-  a.c = W(cos(phi));
+  a.s = kWideSinCos ? sin(W(phi)) : W(sin(phi));
+  a.c = kWideSinCos ? cos(W(phi)) : W(cos(phi));
   a.c2 = a.c * a.c;
   // 1 - m s^2 cancels when m s^2 -> 1; c^2 + (1 - m) s^2 is then a sum of positive terms.
   a.delta2 = (m <= Real(0.5)) ? 1 - W(m) * a.s * a.s : a.c2 + W(one_minus_m) * a.s * a.s;
@@ -369,6 +372,16 @@ bool pi_dd_kernel_available() noexcept;
 extern const bool pi_dd_kernel_flag;  // the same, read without a call
 double ellint_pi_dd(double n, double one_minus_n, double one_minus_n_lo, double phi, double m,
                     double one_minus_m, double one_minus_m_lo) noexcept;
+// The kernel's double-double elementary functions, exported for their accuracy tests (callable
+// only where pi_dd_kernel_available(); results as {hi, lo} pairs): sin and cos of phi in
+// [0, pi/2], atan of x >= 0, log of x >= 1, and R_C(1, 1 + e) - 1 for 0.01 <= |e| < 1.
+struct DoubleDouble {
+  double hi, lo;
+};
+void pi_dd_sincos(double phi, DoubleDouble& sin_phi, DoubleDouble& cos_phi) noexcept;
+DoubleDouble pi_dd_atan(DoubleDouble x) noexcept;
+DoubleDouble pi_dd_log(DoubleDouble x) noexcept;
+DoubleDouble pi_dd_rc_minus_1(DoubleDouble e) noexcept;
 
 // The rounding error of one_minus_x = fl(1 - x), exactly: (1 - x) - one_minus_x (Knuth's
 // two-sum error of 1 + (-x)).
@@ -391,9 +404,11 @@ inline Real ellint_pi_portable(Real n, Real one_minus_n, Real phi, Real m, Real 
   using W = work_t<Real>;
   using std::atan;
   using std::sqrt;
-  const LegendreArgs<W> a = legendre_args(phi, m, one_minus_m);
+  if (n == 0) return ellint_f_core(phi, m, one_minus_m);  // exactly F (Pi(0; phi|m) = F)
+  // s and c in W: at the corners (phi -> pi/2 with m, n -> 1) Pi amplifies their rounding in
+  // Real past 2 ulp (measured: 3 ulp on random samples against 50 digits).
+  const LegendreArgs<W> a = legendre_args<Real, W, true>(phi, m, one_minus_m);
   if (a.s == 0) return phi;
-  if (n == 0) return static_cast<Real>(a.s * rf_legendre<Real>(a.c, a.c2, a.delta2));
   const W s3 = a.s * a.s * a.s;
   const Real N = (m - n) / one_minus_n;  // the transformed characteristic for n < 0
   if (n > 0 || !(N > 0)) {
@@ -417,7 +432,7 @@ inline Real ellint_pi_portable(Real n, Real one_minus_n, Real phi, Real m, Real 
   const W sw = sqrt(w), smn = sqrt(mn);
   const W term_j = w * one_minus_N * (W(1) / 3) * s3 * rj;
   const W arg = sw * smn * a.s * a.c / sqrt(a.delta2);
-  const W term_atan = (sw / smn) * W(atan(static_cast<Real>(arg)));
+  const W term_atan = (sw / smn) * atan(arg);
   return static_cast<Real>(a.s * rf * inv_one_minus_n + term_j + term_atan);
 }
 
