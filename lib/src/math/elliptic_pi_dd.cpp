@@ -1,9 +1,12 @@
 // Pi(n; phi|m) in double through a double-double Carlson loop (AVX2 + FMA, chosen at run time).
-// See elliptic.h ("FAST PATH") for when it is used; the math is the same as the portable path:
-//   Pi = s R_F(c^2, Delta^2, 1) + (n/3) s^3 R_J(c^2, Delta^2, 1, 1 - n s^2)          (n >= 0)
+// See elliptic.h ("FAST PATH") for when it is used. The math:
+//   Pi = s R_F(c^2, Delta^2, 1) + (n/3) s^3 R_J(c^2, Delta^2, 1, 1 - n s^2)          (n >= -1)
 //   Pi = s R_F / (1 - n) + (-n (1-m) / (3 (1-n)^2)) s^3 R_J(c^2, Delta^2, 1, 1 - N s^2)
-//        + sqrt(-n/((1-n)(m-n))) atan(sqrt(-n (m-n)/(1-n)) s c / Delta)               (n < 0)
-// with N = (m - n)/(1 - n) (A&S 17.7.15), R_F and R_J by duplication (DLMF 19.36.1-2).
+//        + sqrt(-n/((1-n)(m-n))) atan(sqrt(-n (m-n)/(1-n)) s c / Delta)               (n < -1)
+// with N = (m - n)/(1 - n) (A&S 17.7.15), R_F and R_J by duplication (DLMF 19.36.1-2). The
+// portable path uses the second form for all n < 0 (in long double the cancellation of the first
+// for -1 <= n < 0, a factor 2 at most, would cost a bit); it stops its duplication at tolerance
+// 0.01 with degree-7 tails, this kernel at 0.03 with degree-9 tails (see rf_tail9).
 //
 // Why double-double: in plain double the duplication loop's roundings (square roots, lambda_k,
 // d_k) reach 4 ulp on the 50-digit tables; the portable path carries the loop in x87 long double,
@@ -11,21 +14,28 @@
 // (|lo| ~ ulp(hi)) updated with error-free transformations (FMA products, two-sums).
 // Three more inputs are kept in double-double, because at the domain's corners (phi -> pi/2
 // with m, n -> 1) each alone costs up to 3-4 ulp when rounded to double (measured against
-// 50-digit Carlson on random samples, EllipticProperty.PiWithinTwoUlpOf50Digits):
+// 50-digit Carlson, EllipticReference.PiAndFWithinTwoUlpOf50DigitsAtCorners):
 //  - s = sin(phi) and c = cos(phi) (sincos_dd, instead of libm's correctly rounded doubles);
-//  - R_C(1, 1 + e_k) where |e_k| >= 0.01 (the first duplication step), by closed forms in
+//    their 2^-54.5 relative error is the largest left: 0.42 ulp of Pi at worst (measured);
+//  - R_C(1, 1 + e_k) where |e_k| >= 0.01 (the first duplication steps), by closed forms in
 //    double-double (atan_dd, log_dd), and e_k from delta formed of double-double differences;
-//  - the atan term of n < 0 (atan_dd).
+//  - the atan term of n < -1 (atan_dd).
 //
-// Speed design (measured: bench_elliptic, Pi/mixed):
+// Speed design (measured: bench_elliptic, Pi/mixed; the loop is bound by the latency of its
+// hi chain and by floating-point throughput, about 50 cycles a step):
 //  - the four arguments (x, y, z, p) of a duplication step sit in one AVX2 register: one vector
-//    square root and one division serve all four;
-//  - the hi parts follow exactly the plain-double recurrence and are never renormalised with the
-//    lo parts, so the lo bookkeeping stays off the loop's critical path (it only feeds the end);
+//    square root serves all four;
+//  - the hi parts follow a plain-double recurrence and are never renormalised with the lo
+//    parts, so the lo bookkeeping stays off the loop's critical path (it only feeds the end);
+//  - the recurrence is scaled by 4^k (no multiplication by 1/4 on the path) and the stopping
+//    rule needs one running sum (Lambda); the loop holds no call (the rare closed forms of R_C
+//    wait for its end), so its state stays in registers;
 //  - everything that does not depend on the loop (the prefactors and the atan term) is formed
 //    before it, so it overlaps with the loop.
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include "disklab/math/elliptic.h"
 
@@ -252,14 +262,13 @@ DL_INLINE DD4 mul(DD4 a, DD4 b) {
   const __m256d e = _mm256_fmsub_pd(a.h, b.h, p);
   return {p, _mm256_fmadd_pd(a.h, b.l, _mm256_fmadd_pd(a.l, b.h, e))};
 }
+// sqrt(a) = h + (a - h^2) / (2h), with 1/(2h) = h / (2a): the division 1/(2a) is issued with
+// the square root instead of after it (both sit on the loop's critical path otherwise).
 DL_INLINE DD4 sqrt_dd(DD4 a) {
+  const __m256d inv = _mm256_div_pd(_mm256_set1_pd(0.5), a.h);
   const __m256d h = _mm256_sqrt_pd(a.h);
   const __m256d r = _mm256_add_pd(_mm256_fnmadd_pd(h, h, a.h), a.l);
-  return {h, _mm256_div_pd(r, _mm256_add_pd(h, h))};
-}
-DL_INLINE DD4 quarter(DD4 a) {
-  const __m256d q = _mm256_set1_pd(0.25);
-  return {_mm256_mul_pd(a.h, q), _mm256_mul_pd(a.l, q)};
+  return {h, _mm256_mul_pd(r, _mm256_mul_pd(h, inv))};
 }
 template <int kLanes>
 DL_INLINE DD4 permute(DD4 a) {
@@ -274,86 +283,147 @@ constexpr int lanes(int l0, int l1, int l2, int l3) {
   return l0 | l1 << 2 | l2 << 4 | l3 << 6;
 }
 
-// R_F(c^2, Delta^2, 1) and R_J(c^2, Delta^2, 1, p) (DLMF 19.36.1-2), as in rf_rj_loop of
-// elliptic.h (same stopping rule and degree-7 tails), in double-double. Requires c > 0,
+DL_INLINE double pow2(int k) {  // 2^k, 0 <= k < 1024
+  return std::bit_cast<double>(static_cast<uint64_t>(1023 + k) << 52);
+}
+
+// The kernel's series tails go to degree 9 (DLMF 19.36.1-2 print degree 7), so that its
+// duplication may stop at tolerance 0.03 instead of 0.01: 0.8 steps fewer on average. The degree-N
+// term of Carlson's expansion is (a)_N/(b)_N times the degree-N part of
+// (1 + E2 - E3 + E4 - E5)^-1/2, that is 1/(2N+1) for R_F (a = 1/2, b = 3/2) and 3/(2N+3) for
+// R_J (a = 3/2, b = 5/2); through degree 7 this reproduces the portable path's coefficients.
+// Truncation: the error scales as tol^10; at 0.04 it becomes visible (+0.06 ulp on Pi's worst
+// of 60000 random corner samples against 50 digits), at 0.03 it is 18 times smaller. A wrong
+// coefficient of degree 8 costs thousands of ulp (the table tests would fail).
+// Without the leading 1, as rf_series_tail and rj_series_tail.
+constexpr double kKernelTolerance = 0.03;
+
+DL_INLINE double rf_tail9(double E2, double E3) {
+  const double e2 = E2 * (-1.0 / 10 + E2 * (1.0 / 24 + E2 * (-5.0 / 208 + E2 * (35.0 / 2176))));
+  const double e3 = 1.0 / 14 + E2 * (-3.0 / 44 + E2 * (1.0 / 16 + E2 * (-35.0 / 608)));
+  const double e33 = 3.0 / 104 + E2 * (-15.0 / 272) + E3 * (5.0 / 304);
+  return e2 + E3 * (e3 + E3 * e33);
+}
+
+DL_INLINE double rj_tail9(double X, double Y, double Z) {
+  const double P = -(X + Y + Z) / 2;
+  const double XYZ = X * Y * Z, P2 = P * P;
+  const double E2 = X * Y + X * Z + Y * Z - 3 * P2;
+  const double E3 = XYZ + 2 * E2 * P + 4 * P * P2;
+  const double E4 = (2 * XYZ + E2 * P + 3 * P * P2) * P;
+  const double E5 = XYZ * P2;
+  const double t2 = E2 * (-3.0 / 14 + E2 * (9.0 / 88 + E2 * (-1.0 / 16 + E2 * (105.0 / 2432))));
+  const double t3 = E3 * (1.0 / 6 + E2 * (-9.0 / 52 + E2 * (45.0 / 272 + E2 * (-5.0 / 32))));
+  const double t4 = E4 * (-3.0 / 22 + E2 * (3.0 / 20 + E2 * (-45.0 / 304)));
+  const double t5 = E5 * (3.0 / 26 + E2 * (-9.0 / 68 + E2 * (15.0 / 112)));
+  const double t33 = E3 * E3 * (3.0 / 40 + E2 * (-45.0 / 304) + E3 * (5.0 / 112));
+  const double t34 = E3 * (E4 * (-9.0 / 68 + E2 * (15.0 / 56)) + E5 * (9.0 / 76));
+  const double t44 = E4 * (E4 * (9.0 / 152) + E5 * (-3.0 / 28));
+  return ((t2 + t3) + (t4 + t5)) + ((t33 + t34) + t44);
+}
+
+// R_F(c^2, Delta^2, 1) and R_J(c^2, Delta^2, 1, p) (DLMF 19.36.1-2) in double-double, by the
+// duplication of rf_rj_loop in elliptic.h with the kernel's tolerance and tails. Requires c > 0,
 // Delta^2 > 0, p > 0 (the Legendre arguments at phi in (0, pi/2]).
+// The recurrence is carried scaled, v'_k = 4^k v_k (x, y, z, p), so that v'_{k+1} = v'_k +
+// lambda(v'_k) (no division by 4: exact in binary, so the values are those of the unscaled
+// loop times 4^k); then A'_k = A_0 + Lambda_k with Lambda_k the sum of the lambda'_j, the
+// stopping rule |A_0 - x_j| 4^-k <= tol A_k reads q_0 <= A_0 + Lambda_k, d'_k = 8^k d_k and
+// e_k = delta / d'_k^2, and the R_C terms 4^-k/d_k = 2^k/d'_k.
 DL_TARGET void rf_rj_dd(DD c, DD delta2, DD p, DD& rf, DD& rj) {
   const DD x = mul(c, c);
   DD4 v = {_mm256_setr_pd(x.h, delta2.h, 1.0, p.h), _mm256_setr_pd(x.l, delta2.l, 0.0, p.l)};
-  // Stopping rule and tail inputs from the hi parts, as in the portable loop: the tails need a
-  // few correct digits only (they are below tol^2 = 1e-4).
+  // Stopping rule and tail inputs from the hi parts: the tails need a few correct digits only.
   const double x0 = x.h, y0 = delta2.h, p0 = p.h;
-  double AF = (x0 + y0 + 1) * (1.0 / 3), AJ = (x0 + y0 + 1 + 2 * p0) * 0.2;
-  const double dFx = AF - x0, dFy = AF - y0, dJx = AJ - x0, dJy = AJ - y0, dJz = AJ - 1;
+  const double AF0 = (x0 + y0 + 1) * (1.0 / 3), AJ0 = (x0 + y0 + 1 + 2 * p0) * 0.2;
+  const double dFx = AF0 - x0, dFy = AF0 - y0, dJx = AJ0 - x0, dJy = AJ0 - y0, dJz = AJ0 - 1;
   // delta = (p - x)(p - y)(p - z) from the double-double arguments (their differences keep
   // their relative accuracy where p is close to x or y); e_k below inherits it.
   const DD p_x = add(p, DD{-x.h, -x.l}), p_y = add(p, DD{-delta2.h, -delta2.l}),
            p_z = add(p, DD{-1, 0});
   const double delta = p_x.h * p_y.h * p_z.h;
-  const double inv_tol = 1 / duplication_tolerance<double>();
-  double qF = std::max(std::fabs(dFx), std::max(std::fabs(dFy), std::fabs(AF - 1))) * inv_tol;
-  double qJ = std::max(std::max(std::fabs(dJx), std::fabs(dJy)),
-                       std::max(std::fabs(dJz), std::fabs(AJ - p0))) *
-              inv_tol;
-  double scale_k = 1, scale3_k = 1;  // 4^-k, 4^-3k
-  DD sum = {0, 0};                   // sum_k 4^-k R_C(1, 1 + e_k) / d_k
-  while (qF > AF || qJ > AJ) {
+  const DD delta_dd = mul(mul(p_x, p_y), p_z);
+  const double inv_tol = 1 / kKernelTolerance;
+  const double qF =
+      std::max(std::fabs(dFx), std::max(std::fabs(dFy), std::fabs(AF0 - 1))) * inv_tol;
+  const double qJ = std::max(std::max(std::fabs(dJx), std::fabs(dJy)),
+                             std::max(std::fabs(dJz), std::fabs(AJ0 - p0))) *
+                    inv_tol;
+  const double lambda_stop = std::max(qF - AF0, qJ - AJ0);  // step while Lambda < lambda_stop
+  double Lambda = 0;
+  int k = 0;
+  // sum_j 2^j R_C(1, 1 + e_j) / d'_j, accumulated as U = sum_j 2^(j-k+1) (...) (halved, then
+  // added to, each step; 2^(k-1) U at the end), so that no power of 2 is carried in the loop.
+  DD sum = {0, 0};
+  // Steps whose |e_k| >= 0.01 need the closed forms of R_C (rc_minus_1_large, a call): they are
+  // deferred past the loop, since a call inside it makes the compiler keep the loop's state in
+  // memory. |e_k| decreases with k (each factor (sqrt p - sqrt x_j)/(sqrt p + sqrt x_j) does), so
+  // they are the first steps, and in practice at most two; the fourth and later would be done in
+  // place (still correct).
+  constexpr int kMaxDeferred = 4;
+  DD deferred_term[kMaxDeferred], deferred_e[kMaxDeferred];
+  int n_deferred = 0;
+  while (Lambda < lambda_stop) {
     const DD4 s = sqrt_dd(v);  // sx sy sz sp
     // lambda = sx sy + sy sz + sz sx in every lane, as a b + b c + c a with (a, b, c) the lanes
     // of s rotated (one permute level instead of a horizontal sum and a broadcast).
     const DD4 a = permute<lanes(0, 1, 2, 0)>(s), b = permute<lanes(1, 2, 0, 1)>(s),
               c = permute<lanes(2, 0, 1, 2)>(s);
-    const DD4 lam = add(add(mul(a, b), mul(b, c)), mul(c, a));
+    const DD4 ab = mul(a, b), bc = mul(b, c), ca = mul(c, a);
+    const DD4 ab_bc = add(ab, bc);
     // d = (sp + sx)(sp + sy)(sp + sz) (lane 0).
     const DD4 w = add(s, permute<lanes(3, 3, 3, 3)>(s));
     const DD4 d4 = mul(mul(w, permute<lanes(1, 3, 3, 3)>(w)), permute<lanes(2, 3, 3, 3)>(w));
-    const DD lambda = lane0(lam), d = lane0(d4);
-    const DD inv_d = recip(d);
-    // e_k and 1 + e_k as in rf_rj_loop; R_C(1, 1 + e) = 1 + (R_C - 1) keeps the leading 1 exact.
-    // e_k = 4^-3k delta / d_k^2 (DLMF 19.36.2); its R_C term as inv_d (1 + (R_C - 1)).
-    const double e = scale3_k * delta * inv_d.h * inv_d.h;
-    DD term;
-    if (std::fabs(e) < 0.01) {
-      term = add(inv_d, two_prod(inv_d.h, rc_minus_1_small(e)));
+    Lambda += _mm256_cvtsd_f64(_mm256_add_pd(ab_bc.h, ca.h));
+    v = add(ab_bc, add(v, ca));  // (ab + bc) + (v + ca): one addition less on the path
+    const DD inv_d = recip(lane0(d4));
+    const double e = delta * inv_d.h * inv_d.h;
+    if (std::fabs(e) < 0.01) [[likely]] {
+      // inv_d R_C = inv_d + inv_d (R_C - 1), |R_C - 1| < 0.004: the second term in double is
+      // accurate to 2^-61 of the first; the pair goes unnormalised into the sum's two-sum.
+      sum = add(scale(sum, 0.5), DD{inv_d.h, std::fma(inv_d.h, rc_minus_1_small(e), inv_d.l)});
+    } else if (n_deferred < kMaxDeferred) {
+      sum = scale(sum, 0.5);
+      deferred_term[n_deferred] = scale(inv_d, pow2(k));
+      deferred_e[n_deferred++] = mul(delta_dd, mul(inv_d, inv_d));
     } else {
-      const DD e_dd = scale(mul(mul(mul(p_x, p_y), p_z), mul(inv_d, inv_d)), scale3_k);
-      term = add(inv_d, mul(inv_d, rc_minus_1_large(e_dd)));
+      const DD rc1 = rc_minus_1_large(mul(delta_dd, mul(inv_d, inv_d)));
+      sum = add(scale(sum, 0.5), add(inv_d, mul(inv_d, rc1)));
     }
-    sum = add(sum, scale(term, scale_k));
-    v = quarter(add(v, lam));
-    AF = (AF + lambda.h) * 0.25;
-    AJ = (AJ + lambda.h) * 0.25;
-    qF *= 0.25;
-    qJ *= 0.25;
-    scale_k *= 0.25;
-    scale3_k *= 1.0 / 64;
+    ++k;
   }
+  const double two_k = pow2(k);
+  sum = scale(sum, 0.5 * two_k);
+  for (int i = 0; i < n_deferred; ++i)
+    sum = add(sum, add(deferred_term[i], mul(deferred_term[i], rc_minus_1_large(deferred_e[i]))));
   alignas(32) double hi[4], lo[4];
   _mm256_store_pd(hi, v.h);
   _mm256_store_pd(lo, v.l);
   const DD xyz = add(add(DD{hi[0], lo[0]}, DD{hi[1], lo[1]}), DD{hi[2], lo[2]});
-  // A^-1/2 from the tracked double A (h), corrected once with the double-double A:
-  // A^-1/2 = h (1 + e/2), e = 1 - A h^2 (|e| ~ 1e-16, so e^2 terms are below 2^-100).
+  // A'^-1/2 from the double A' = A_0 + Lambda (h), corrected once with the double-double A':
+  // A'^-1/2 = h (1 + e/2), e = 1 - A' h^2 (|e| ~ 1e-16, so e^2 terms are below 2^-100); then
+  // A_k^-1/2 = 2^k A'^-1/2.
+  const double AF = AF0 + Lambda, AJ = AJ0 + Lambda;
   const double inv_AF = 1 / AF, inv_AJ = 1 / AJ;
   const double hF = std::sqrt(AF) * inv_AF, hJ = std::sqrt(AJ) * inv_AJ;
   {
     const DD A = mul(xyz, kThird);
     const DD t = two_prod(hF, hF);
     const double e = std::fma(-A.h, t.h, 1.0) - A.h * t.l - A.l * t.h;
-    const double X = dFx * scale_k * inv_AF, Y = dFy * scale_k * inv_AF, Z = -(X + Y);
-    const double E2 = X * Y - Z * Z, E3 = X * Y * Z;
-    const double tail = rf_series_tail(E2, E3);
-    rf = {hF, hF * (0.5 * e + tail)};
+    // X_j = (A_k - x_j,k)/A_k = (A_0 - x_j,0)/A'_k.
+    const double X = dFx * inv_AF, Y = dFy * inv_AF, Z = -(X + Y);
+    const double tail = rf_tail9(X * Y - Z * Z, X * Y * Z);
+    const double head = hF * two_k;
+    rf = {head, head * (0.5 * e + tail)};
   }
   {
     const DD A = mul(add(xyz, scale(DD{hi[3], lo[3]}, 2)), kFifth);
     const DD t = two_prod(hJ, hJ);
     const double e = std::fma(-A.h, t.h, 1.0) - A.h * t.l - A.l * t.h;
-    const DD h3 = mul(t, hJ);  // A^-3/2 = h^3 (1 + 3e/2)
-    const double X = dJx * scale_k * inv_AJ, Y = dJy * scale_k * inv_AJ, Z = dJz * scale_k * inv_AJ;
-    const double tail = rj_series_tail(X, Y, Z);
-    const double head = h3.h * scale_k;
-    rj = add(DD{head, h3.l * scale_k + head * (1.5 * e + tail)}, mul(sum, 6.0));
+    const DD h3 = mul(t, hJ);  // A'^-3/2 = h^3 (1 + 3e/2); A_k^-3/2 4^-k = 2^k A'^-3/2
+    const double tail = rj_tail9(dJx * inv_AJ, dJy * inv_AJ, dJz * inv_AJ);
+    const double head = h3.h * two_k;
+    rj = add(DD{head, h3.l * two_k + head * (1.5 * e + tail)}, mul(sum, 6.0));
   }
 }
 
@@ -365,7 +435,9 @@ DL_TARGET double pi_dd(double n, DD omn, double phi, double m, DD omm) {
   const DD delta2 = m <= 0.5 ? add(DD{1, 0}, mul(s2, -m)) : add(c2, mul(s2, omm));
   const DD s3 = mul(s2, s);
   DD rf, rj;
-  if (n >= 0) {
+  // For -1 <= n < 0 the two terms have opposite signs but cancel by a factor 2 at most (Pi >= F/2
+  // there), a bit that double-double arithmetic can spare: no A&S 17.7.15 and no atan.
+  if (n >= -1) {
     const DD p = n <= 0.5 ? add(DD{1, 0}, mul(s2, -n)) : add(c2, mul(s2, omn));
     const DD kj = mul(s3, mul(kThird, n));  // (n/3) s^3
     rf_rj_dd(c, delta2, p, rf, rj);
