@@ -322,27 +322,31 @@ DL_INLINE double rj_tail9(double X, double Y, double Z) {
   return ((t2 + t3) + (t4 + t5)) + ((t33 + t34) + t44);
 }
 
-// R_F(c^2, Delta^2, 1) and R_J(c^2, Delta^2, 1, p) (DLMF 19.36.1-2) in double-double, by the
-// duplication of rf_rj_loop in elliptic.h with the kernel's tolerance and tails. Requires c > 0,
-// Delta^2 > 0, p > 0 (the Legendre arguments at phi in (0, pi/2]).
+// R_F(x, Delta^2, 1) and R_J(x, Delta^2, 1, p), x = c^2 (DLMF 19.36.1-2) in double-double, by
+// the duplication of rf_rj_loop in elliptic.h with the kernel's tolerance and tails. Requires
+// x > 0, Delta^2 > 0, p > 0 (the Legendre arguments at phi in (0, pi/2]).
 // The recurrence is carried scaled, v'_k = 4^k v_k (x, y, z, p), so that v'_{k+1} = v'_k +
 // lambda(v'_k) (no division by 4: exact in binary, so the values are those of the unscaled
 // loop times 4^k); then A'_k = A_0 + Lambda_k with Lambda_k the sum of the lambda'_j, the
 // stopping rule |A_0 - x_j| 4^-k <= tol A_k reads q_0 <= A_0 + Lambda_k, d'_k = 8^k d_k and
 // e_k = delta / d'_k^2, and the R_C terms 4^-k/d_k = 2^k/d'_k.
-DL_TARGET void rf_rj_dd(DD c, DD delta2, DD p, DD& rf, DD& rj) {
-  const DD x = mul(c, c);
+// (p - x)(p - y)(p - 1) in double-double (differences first: they keep their relative accuracy).
+DL_INLINE DD pxyz_dd(DD p, DD x, DD y) {
+  return mul(mul(add(p, DD{-x.h, -x.l}), add(p, DD{-y.h, -y.l})), add(p, DD{-1, 0}));
+}
+
+DL_TARGET void rf_rj_dd(DD x, DD delta2, DD p, DD& rf, DD& rj) {
   DD4 v = {_mm256_setr_pd(x.h, delta2.h, 1.0, p.h), _mm256_setr_pd(x.l, delta2.l, 0.0, p.l)};
   // Stopping rule and tail inputs from the hi parts: the tails need a few correct digits only.
   const double x0 = x.h, y0 = delta2.h, p0 = p.h;
   const double AF0 = (x0 + y0 + 1) * (1.0 / 3), AJ0 = (x0 + y0 + 1 + 2 * p0) * 0.2;
   const double dFx = AF0 - x0, dFy = AF0 - y0, dJx = AJ0 - x0, dJy = AJ0 - y0, dJz = AJ0 - 1;
-  // delta = (p - x)(p - y)(p - z) from the double-double arguments (their differences keep
-  // their relative accuracy where p is close to x or y); e_k below inherits it.
-  const DD p_x = add(p, DD{-x.h, -x.l}), p_y = add(p, DD{-delta2.h, -delta2.l}),
-           p_z = add(p, DD{-1, 0});
-  const double delta = p_x.h * p_y.h * p_z.h;
-  const DD delta_dd = mul(mul(p_x, p_y), p_z);
+  // delta = (p - x)(p - y)(p - z) from the double-double arguments: where p is close to x or y,
+  // p.h - x.h is exact (Sterbenz) and the lo parts' difference keeps the relative accuracy that
+  // e_k below inherits. The double-double delta (for the closed forms of R_C) is formed only
+  // where those are needed.
+  const double delta =
+      (p.h - x.h + (p.l - x.l)) * (p.h - delta2.h + (p.l - delta2.l)) * (p.h - 1 + p.l);
   const double inv_tol = 1 / kKernelTolerance;
   const double qF =
       std::max(std::fabs(dFx), std::max(std::fabs(dFy), std::fabs(AF0 - 1))) * inv_tol;
@@ -385,17 +389,22 @@ DL_TARGET void rf_rj_dd(DD c, DD delta2, DD p, DD& rf, DD& rj) {
     } else if (n_deferred < kMaxDeferred) {
       sum = scale(sum, 0.5);
       deferred_term[n_deferred] = scale(inv_d, pow2(k));
-      deferred_e[n_deferred++] = mul(delta_dd, mul(inv_d, inv_d));
+      deferred_e[n_deferred++] = mul(inv_d, inv_d);  // e = delta / d'^2
     } else {
-      const DD rc1 = rc_minus_1_large(mul(delta_dd, mul(inv_d, inv_d)));
+      const DD rc1 = rc_minus_1_large(mul(pxyz_dd(p, x, delta2), mul(inv_d, inv_d)));
       sum = add(scale(sum, 0.5), add(inv_d, mul(inv_d, rc1)));
     }
     ++k;
   }
   const double two_k = pow2(k);
   sum = scale(sum, 0.5 * two_k);
-  for (int i = 0; i < n_deferred; ++i)
-    sum = add(sum, add(deferred_term[i], mul(deferred_term[i], rc_minus_1_large(deferred_e[i]))));
+  if (n_deferred != 0) {
+    const DD delta_dd = pxyz_dd(p, x, delta2);
+    for (int i = 0; i < n_deferred; ++i) {
+      const DD rc1 = rc_minus_1_large(mul(delta_dd, deferred_e[i]));
+      sum = add(sum, add(deferred_term[i], mul(deferred_term[i], rc1)));
+    }
+  }
   alignas(32) double hi[4], lo[4];
   _mm256_store_pd(hi, v.h);
   _mm256_store_pd(lo, v.l);
@@ -440,7 +449,7 @@ DL_TARGET double pi_dd(double n, DD omn, double phi, double m, DD omm) {
   if (n >= -1) {
     const DD p = n <= 0.5 ? add(DD{1, 0}, mul(s2, -n)) : add(c2, mul(s2, omn));
     const DD kj = mul(s3, mul(kThird, n));  // (n/3) s^3
-    rf_rj_dd(c, delta2, p, rf, rj);
+    rf_rj_dd(c2, delta2, p, rf, rj);
     return value(add(mul(rf, s), mul(rj, kj)));
   }
   const DD inv_omn = recip(omn);
@@ -453,7 +462,7 @@ DL_TARGET double pi_dd(double n, DD omn, double phi, double m, DD omm) {
   const DD g = sqrt_dd(mul(w, mn));  // sqrt(-n (m - n)/(1 - n))
   const DD arg = mul(mul(g, mul(s, c)), recip(sqrt_dd(delta2)));
   const DD term_atan = mul(mul(g, recip(mn)), atan_dd(arg));
-  rf_rj_dd(c, delta2, pN, rf, rj);
+  rf_rj_dd(c2, delta2, pN, rf, rj);
   return value(add(add(mul(rf, k1), mul(rj, kj)), term_atan));
 }
 
