@@ -293,8 +293,10 @@ DL_INLINE double pow2(int k) {  // 2^k, 0 <= k < 1024
 // (1 + E2 - E3 + E4 - E5)^-1/2, that is 1/(2N+1) for R_F (a = 1/2, b = 3/2) and 3/(2N+3) for
 // R_J (a = 3/2, b = 5/2); through degree 7 this reproduces the portable path's coefficients.
 // Truncation: the error scales as tol^10; at 0.04 it becomes visible (+0.06 ulp on Pi's worst
-// of 60000 random corner samples against 50 digits), at 0.03 it is 18 times smaller. A wrong
-// coefficient of degree 8 costs thousands of ulp (the table tests would fail).
+// of 60000 random corner samples against 50 digits), at 0.03 it is 18 times smaller. Checked by
+// mutation: zeroing a degree-8 coefficient (R_J's E2^4) gives 23 ulp on the table, tolerance
+// 0.05 gives 3 ulp (both fail EllipticReference.Pi*); the degree-9 terms are margin, below what
+// the tables resolve at 0.03.
 // Without the leading 1, as rf_series_tail and rj_series_tail.
 constexpr double kKernelTolerance = 0.03;
 

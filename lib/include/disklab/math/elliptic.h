@@ -45,8 +45,10 @@
 // FAST PATH (Pi in double only): on x86-64 CPUs with AVX2 and FMA (checked once at run time),
 // ellint_pi<double> with m in [0, 1] and phi in (0, pi/2] runs a double-double version of the
 // same loop (lib/src/math/elliptic_pi_dd.cpp), which also carries s, c, the first steps' R_C and
-// the atan term in double-double. Elsewhere, and for m < 0 or n = 0, the long-double path
-// (ellint_pi_portable) runs, with s, c, R_C and atan in long double. Rounding any of those to
+// the atan term in double-double; it stops the duplication at tolerance 0.03 with degree-9
+// tails, and for -1 <= n < 0 uses the untransformed Legendre form (see that file). Elsewhere,
+// and for m < 0 or n = 0, the long-double path (ellint_pi_portable) runs, with s, c, R_C and
+// atan in long double. Rounding any of those to
 // double costs up to 3 ulp at the domain's corners (phi -> pi/2 with m, n -> 1). Both paths:
 // max 1 ulp on the 50-digit table and on a 9000-sample corner sweep against 50-digit Carlson
 // (RMS 0.09 / 0.08 ulp kernel, 0.24 / 0.06 portable): test_math
