@@ -257,6 +257,46 @@ TEST(EllipticReference, Float50TemplatesAgreeWithTablesTo1em40) {
   std::printf("cpp_bin_float_50 vs tables: worst relative %s\n", worst.str(4).c_str());
 }
 
+// The kernel's degree-9 series tails (elliptic.h) against 50-digit R_F and R_J, at A = 1 with
+// relative deviations of size delta in random directions. Their error is the truncation,
+// O(delta^10): halving delta divides its sum over the samples by 2^10 = 1024. A missing
+// degree-9 term leaves O(delta^9), a ratio near 512 (zeroing R_F's E3^3 term: 550); so the test
+// asks for more than 2^9.5 = 724. A coefficient off by a few percent can pass (R_J's E4 E5 term
+// off by 3.5%: 893): the Pi tables then bound its effect. The degree-7 tails, O(delta^8), must show
+// a ratio near 256 (below 362 = 2^8.5): the test tells the orders apart. delta = 0.02 and 0.01 keep
+// the errors (1e-17 to 1e-21) far above cpp_bin_float_50's rounding.
+TEST(EllipticReference, SeriesTailsOfDegree9) {
+  sequence::Pcg32 rng(2026, 9);
+  Real50 err_f9[2] = {0, 0}, err_j9[2] = {0, 0}, err_f7[2] = {0, 0}, err_j7[2] = {0, 0};
+  for (int i = 0; i < 400; ++i) {
+    const double u = 2 * rng.next_double() - 1, v = 2 * rng.next_double() - 1,
+                 w = 2 * rng.next_double() - 1;
+    for (int h = 0; h < 2; ++h) {
+      const Real50 delta = h == 0 ? Real50(0.02) : Real50(0.01);
+      // R_F(1 - X, 1 - Y, 1 - Z) with X + Y + Z = 0: A = 1, R_F = 1 + tail.
+      const Real50 X = delta * u, Y = delta * v, Z = -(X + Y);
+      const Real50 tail_f = math::carlson_rf(1 - X, 1 - Y, 1 - Z) - 1;
+      err_f9[h] += abs(math::detail::rf_series_tail9(X * Y - Z * Z, X * Y * Z) - tail_f);
+      err_f7[h] += abs(math::detail::rf_series_tail(X * Y - Z * Z, X * Y * Z) - tail_f);
+      // R_J(1 - X, 1 - Y, 1 - Z, 1 - P) with P = -(X + Y + Z)/2: A = 1, R_J = 1 + tail.
+      const Real50 Xj = delta * u, Yj = delta * v, Zj = delta * w, P = -(Xj + Yj + Zj) / 2;
+      const Real50 tail_j = math::carlson_rj(1 - Xj, 1 - Yj, 1 - Zj, 1 - P) - 1;
+      err_j9[h] += abs(math::detail::rj_series_tail9(Xj, Yj, Zj) - tail_j);
+      err_j7[h] += abs(math::detail::rj_series_tail(Xj, Yj, Zj) - tail_j);
+    }
+  }
+  const double rf9 = double(err_f9[0] / err_f9[1]), rj9 = double(err_j9[0] / err_j9[1]);
+  const double rf7 = double(err_f7[0] / err_f7[1]), rj7 = double(err_j7[0] / err_j7[1]);
+  std::printf(
+      "series tails, error ratio for delta 0.02 / 0.01: degree 9 R_F %.0f R_J %.0f, degree 7 "
+      "R_F %.0f R_J %.0f (mean error at 0.02: %.2g %.2g)\n",
+      rf9, rj9, rf7, rj7, double(err_f9[0] / 400), double(err_j9[0] / 400));
+  EXPECT_GT(rf9, 724);
+  EXPECT_GT(rj9, 724);
+  EXPECT_LT(rf7, 362);
+  EXPECT_LT(rj7, 362);
+}
+
 TEST(EllipticReference, MissingTableFailsLoudly) {
   EXPECT_THROW(read_elliptic_table("no_such_table.csv", 2), std::runtime_error);
 }

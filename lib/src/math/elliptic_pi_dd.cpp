@@ -6,7 +6,7 @@
 // with N = (m - n)/(1 - n) (A&S 17.7.15), R_F and R_J by duplication (DLMF 19.36.1-2). The
 // portable path uses the second form for all n < 0 (in long double the cancellation of the first
 // for -1 <= n < 0, a factor 2 at most, would cost a bit); it stops its duplication at tolerance
-// 0.01 with degree-7 tails, this kernel at 0.03 with degree-9 tails (see rf_tail9).
+// 0.01 with degree-7 tails, this kernel at 0.03 with degree-9 tails (see kKernelTolerance).
 //
 // Why double-double: in plain double the duplication loop's roundings (square roots, lambda_k,
 // d_k) reach 4 ulp on the 50-digit tables; the portable path carries the loop in x87 long double,
@@ -287,51 +287,16 @@ DL_INLINE double pow2(int k) {  // 2^k, 0 <= k < 1024
   return std::bit_cast<double>(static_cast<uint64_t>(1023 + k) << 52);
 }
 
-// The kernel's series tails go to degree 9 (DLMF 19.36.1-2 print degree 7), so that its
-// duplication may stop at tolerance 0.03 instead of 0.01: 0.8 steps fewer on average. The degree-N
-// term of Carlson's expansion is (a)_N/(b)_N times the degree-N part of
-// (1 + E2 - E3 + E4 - E5)^-1/2, that is 1/(2N+1) for R_F (a = 1/2, b = 3/2) and 3/(2N+3) for
-// R_J (a = 3/2, b = 5/2); through degree 7 this reproduces the portable path's coefficients.
-// Truncation: the error scales as tol^10; at 0.04 it becomes visible (+0.06 ulp on Pi's worst
-// of 60000 random corner samples against 50 digits), at 0.03 it is 18 times smaller. Checked by
-// mutation: zeroing a degree-8 coefficient (R_J's E2^4) gives 23 ulp on the table, tolerance
-// 0.05 gives 3 ulp (both fail EllipticReference.Pi*); the degree-9 terms are margin, below what
-// the tables resolve at 0.03.
-// Without the leading 1, as rf_series_tail and rj_series_tail.
+// The kernel's series tails go to degree 9 (rf_series_tail9, rj_series_tail9 in elliptic.h),
+// so that its duplication may stop at tolerance 0.03 instead of 0.01: 0.8 steps fewer on
+// average. Truncation: the error scales as tol^10; at 0.04 it becomes visible (+0.06 ulp on
+// Pi's worst of 60000 random corner samples against 50 digits), at 0.03 it is 18 times smaller.
+// Checked by mutation: zeroing a degree-8 coefficient (R_J's E2^4) gives 23 ulp on the table,
+// tolerance 0.05 gives 3 ulp (both fail EllipticReference.Pi*); the degree-9 terms are margin
+// here, below what the tables resolve at 0.03 (EllipticReference.SeriesTailsOfDegree9 checks
+// them directly).
 constexpr double kKernelTolerance = 0.03;
 
-DL_INLINE double rf_tail9(double E2, double E3) {
-  const double e2 = E2 * (-1.0 / 10 + E2 * (1.0 / 24 + E2 * (-5.0 / 208 + E2 * (35.0 / 2176))));
-  const double e3 = 1.0 / 14 + E2 * (-3.0 / 44 + E2 * (1.0 / 16 + E2 * (-35.0 / 608)));
-  const double e33 = 3.0 / 104 + E2 * (-15.0 / 272) + E3 * (5.0 / 304);
-  return e2 + E3 * (e3 + E3 * e33);
-}
-
-DL_INLINE double rj_tail9(double X, double Y, double Z) {
-  const double P = -(X + Y + Z) / 2;
-  const double XYZ = X * Y * Z, P2 = P * P;
-  const double E2 = X * Y + X * Z + Y * Z - 3 * P2;
-  const double E3 = XYZ + 2 * E2 * P + 4 * P * P2;
-  const double E4 = (2 * XYZ + E2 * P + 3 * P * P2) * P;
-  const double E5 = XYZ * P2;
-  const double t2 = E2 * (-3.0 / 14 + E2 * (9.0 / 88 + E2 * (-1.0 / 16 + E2 * (105.0 / 2432))));
-  const double t3 = E3 * (1.0 / 6 + E2 * (-9.0 / 52 + E2 * (45.0 / 272 + E2 * (-5.0 / 32))));
-  const double t4 = E4 * (-3.0 / 22 + E2 * (3.0 / 20 + E2 * (-45.0 / 304)));
-  const double t5 = E5 * (3.0 / 26 + E2 * (-9.0 / 68 + E2 * (15.0 / 112)));
-  const double t33 = E3 * E3 * (3.0 / 40 + E2 * (-45.0 / 304) + E3 * (5.0 / 112));
-  const double t34 = E3 * (E4 * (-9.0 / 68 + E2 * (15.0 / 56)) + E5 * (9.0 / 76));
-  const double t44 = E4 * (E4 * (9.0 / 152) + E5 * (-3.0 / 28));
-  return ((t2 + t3) + (t4 + t5)) + ((t33 + t34) + t44);
-}
-
-// R_F(x, Delta^2, 1) and R_J(x, Delta^2, 1, p), x = c^2 (DLMF 19.36.1-2) in double-double, by
-// the duplication of rf_rj_loop in elliptic.h with the kernel's tolerance and tails. Requires
-// x > 0, Delta^2 > 0, p > 0 (the Legendre arguments at phi in (0, pi/2]).
-// The recurrence is carried scaled, v'_k = 4^k v_k (x, y, z, p), so that v'_{k+1} = v'_k +
-// lambda(v'_k) (no division by 4: exact in binary, so the values are those of the unscaled
-// loop times 4^k); then A'_k = A_0 + Lambda_k with Lambda_k the sum of the lambda'_j, the
-// stopping rule |A_0 - x_j| 4^-k <= tol A_k reads q_0 <= A_0 + Lambda_k, d'_k = 8^k d_k and
-// e_k = delta / d'_k^2, and the R_C terms 4^-k/d_k = 2^k/d'_k.
 // (p - x)(p - y)(p - 1) in double-double (differences first: they keep their relative accuracy).
 DL_INLINE DD pxyz_dd(DD p, DD x, DD y) {
   return mul(mul(add(p, DD{-x.h, -x.l}), add(p, DD{-y.h, -y.l})), add(p, DD{-1, 0}));
@@ -423,7 +388,7 @@ DL_TARGET void rf_rj_dd(DD x, DD delta2, DD p, DD& rf, DD& rj) {
     const double e = std::fma(-A.h, t.h, 1.0) - A.h * t.l - A.l * t.h;
     // X_j = (A_k - x_j,k)/A_k = (A_0 - x_j,0)/A'_k.
     const double X = dFx * inv_AF, Y = dFy * inv_AF, Z = -(X + Y);
-    const double tail = rf_tail9(X * Y - Z * Z, X * Y * Z);
+    const double tail = rf_series_tail9(X * Y - Z * Z, X * Y * Z);
     const double head = hF * two_k;
     rf = {head, head * (0.5 * e + tail)};
   }
@@ -432,7 +397,7 @@ DL_TARGET void rf_rj_dd(DD x, DD delta2, DD p, DD& rf, DD& rj) {
     const DD t = two_prod(hJ, hJ);
     const double e = std::fma(-A.h, t.h, 1.0) - A.h * t.l - A.l * t.h;
     const DD h3 = mul(t, hJ);  // A'^-3/2 = h^3 (1 + 3e/2); A_k^-3/2 4^-k = 2^k A'^-3/2
-    const double tail = rj_tail9(dJx * inv_AJ, dJy * inv_AJ, dJz * inv_AJ);
+    const double tail = rj_series_tail9(dJx * inv_AJ, dJy * inv_AJ, dJz * inv_AJ);
     const double head = h3.h * two_k;
     rj = add(DD{head, h3.l * two_k + head * (1.5 * e + tail)}, mul(sum, 6.0));
   }

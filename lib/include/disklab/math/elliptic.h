@@ -155,6 +155,38 @@ inline W rj_series_tail(W X, W Y, W Z) {
          E4 * (W(-3) / 22 + W(3) / 20 * E2) + E5 * (W(3) / 26 - W(9) / 68 * E2);
 }
 
+// The same tails through degree 9, for the double-double kernel (lib/src/math/elliptic_pi_dd.cpp),
+// which stops its duplication at tolerance 0.03 instead of 0.01. The degree-N term of Carlson's
+// expansion is (a)_N/(b)_N times the degree-N part of (1 + E2 - E3 + E4 - E5)^-1/2: 1/(2N+1)
+// for R_F (a = 1/2, b = 3/2) and 3/(2N+3) for R_J (a = 3/2, b = 5/2); through degree 7 this
+// reproduces the coefficients above. EllipticReference.SeriesTailsOfDegree9 checks them against
+// 50-digit R_F and R_J.
+template <class W>
+inline W rf_series_tail9(W E2, W E3) {
+  const W e2 = E2 * (W(-1) / 10 + E2 * (W(1) / 24 + E2 * (W(-5) / 208 + E2 * (W(35) / 2176))));
+  const W e3 = W(1) / 14 + E2 * (W(-3) / 44 + E2 * (W(1) / 16 + E2 * (W(-35) / 608)));
+  const W e33 = W(3) / 104 + E2 * (W(-15) / 272) + E3 * (W(5) / 304);
+  return e2 + E3 * (e3 + E3 * e33);
+}
+
+template <class W>
+inline W rj_series_tail9(W X, W Y, W Z) {
+  const W P = -(X + Y + Z) / 2;
+  const W XYZ = X * Y * Z, P2 = P * P;
+  const W E2 = X * Y + X * Z + Y * Z - 3 * P2;
+  const W E3 = XYZ + 2 * E2 * P + 4 * P * P2;
+  const W E4 = (2 * XYZ + E2 * P + 3 * P * P2) * P;
+  const W E5 = XYZ * P2;
+  const W t2 = E2 * (W(-3) / 14 + E2 * (W(9) / 88 + E2 * (W(-1) / 16 + E2 * (W(105) / 2432))));
+  const W t3 = E3 * (W(1) / 6 + E2 * (W(-9) / 52 + E2 * (W(45) / 272 + E2 * (W(-5) / 32))));
+  const W t4 = E4 * (W(-3) / 22 + E2 * (W(3) / 20 + E2 * (W(-45) / 304)));
+  const W t5 = E5 * (W(3) / 26 + E2 * (W(-9) / 68 + E2 * (W(15) / 112)));
+  const W t33 = E3 * E3 * (W(3) / 40 + E2 * (W(-45) / 304) + E3 * (W(5) / 112));
+  const W t34 = E3 * (E4 * (W(-9) / 68 + E2 * (W(15) / 56)) + E5 * (W(9) / 76));
+  const W t44 = E4 * (E4 * (W(9) / 152) + E5 * (W(-3) / 28));
+  return ((t2 + t3) + (t4 + t5)) + ((t33 + t34) + t44);
+}
+
 // R_F from the duplicated arguments (A and two of the x_j).
 template <class W>
 inline W rf_series(W A, W x, W y) {
