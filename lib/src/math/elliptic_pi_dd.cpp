@@ -329,8 +329,9 @@ DL_TARGET void rf_rj_dd(DD x, DD delta2, DD p, DD& rf, DD& rj) {
   // Steps whose |e_k| >= 0.01 need the closed forms of R_C (rc_minus_1_large, a call): they are
   // deferred past the loop, since a call inside it makes the compiler keep the loop's state in
   // memory. |e_k| decreases with k (each factor (sqrt p - sqrt x_j)/(sqrt p + sqrt x_j) does), so
-  // they are the first steps, and in practice at most two; the fourth and later would be done in
-  // place (still correct).
+  // they are the first steps: none or one for most inputs, more at the corners (x = c^2 down to
+  // 1e-32). The fifth and later are done in place (random corner samples against 50 digits
+  // reach that path: 63 of 60000, all within 1 ulp).
   constexpr int kMaxDeferred = 4;
   DD deferred_term[kMaxDeferred], deferred_e[kMaxDeferred];
   int n_deferred = 0;
