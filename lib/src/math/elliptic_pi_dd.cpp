@@ -16,13 +16,13 @@
 // with m, n -> 1) each alone costs up to 3-4 ulp when rounded to double (measured against
 // 50-digit Carlson, EllipticReference.PiAndFWithinTwoUlpOf50DigitsAtCorners):
 //  - s = sin(phi) and c = cos(phi) (sincos_dd, instead of libm's correctly rounded doubles);
-//    their 2^-54.5 relative error is the largest left: 0.42 ulp of Pi at worst (measured);
+//    their 2^-54.5 relative error is the largest of the kernel's elementary functions
+//    (EllipticReference.KernelElementaryFunctionsWithin2em55Of50Digits prints them);
 //  - R_C(1, 1 + e_k) where |e_k| >= 0.01 (the first duplication steps), by closed forms in
 //    double-double (atan_dd, log_dd), and e_k from delta formed of double-double differences;
 //  - the atan term of n < -1 (atan_dd).
 //
-// Speed design (measured: bench_elliptic, Pi/mixed; the loop is bound by the latency of its
-// hi chain and by floating-point throughput, about 50 cycles a step):
+// Speed design (measured: bench_elliptic, Pi/mixed):
 //  - the four arguments (x, y, z, p) of a duplication step sit in one AVX2 register: one vector
 //    square root serves all four;
 //  - the hi parts follow a plain-double recurrence and are never renormalised with the lo
@@ -288,13 +288,11 @@ DL_INLINE double pow2(int k) {  // 2^k, 0 <= k < 1024
 }
 
 // The kernel's series tails go to degree 9 (rf_series_tail9, rj_series_tail9 in elliptic.h),
-// so that its duplication may stop at tolerance 0.03 instead of 0.01: 0.8 steps fewer on
-// average. Truncation: the error scales as tol^10; at 0.04 it becomes visible (+0.06 ulp on
-// Pi's worst of 60000 random corner samples against 50 digits), at 0.03 it is 18 times smaller.
-// Checked by mutation: zeroing a degree-8 coefficient (R_J's E2^4) gives 23 ulp on the table,
-// tolerance 0.05 gives 3 ulp (both fail EllipticReference.Pi*); the degree-9 terms are margin
-// here, below what the tables resolve at 0.03 (EllipticReference.SeriesTailsOfDegree9 checks
-// them directly).
+// so that its duplication may stop at tolerance 0.03 instead of 0.01 (log_4 3 = 0.8 steps
+// fewer). Their truncation error scales as tol^10. Checked by mutation: zeroing a degree-8
+// coefficient (R_J's E2^4) gives 23 ulp on the table, tolerance 0.05 gives 3 ulp (both fail
+// EllipticReference.Pi*); the degree-9 terms are margin, below what the tables resolve at 0.03
+// (EllipticReference.SeriesTailsOfDegree9 checks them directly).
 constexpr double kKernelTolerance = 0.03;
 
 // (p - x)(p - y)(p - 1) in double-double (differences first: they keep their relative accuracy).
@@ -330,8 +328,8 @@ DL_TARGET void rf_rj_dd(DD x, DD delta2, DD p, DD& rf, DD& rj) {
   // deferred past the loop, since a call inside it makes the compiler keep the loop's state in
   // memory. |e_k| decreases with k (each factor (sqrt p - sqrt x_j)/(sqrt p + sqrt x_j) does), so
   // they are the first steps: none or one for most inputs, more at the corners (x = c^2 down to
-  // 1e-32). The fifth and later are done in place (random corner samples against 50 digits
-  // reach that path: 63 of 60000, all within 1 ulp).
+  // 1e-32). The fifth and later are done in place (the Pi table and the corner sweep of
+  // EllipticReference reach that path).
   constexpr int kMaxDeferred = 4;
   DD deferred_term[kMaxDeferred], deferred_e[kMaxDeferred];
   int n_deferred = 0;

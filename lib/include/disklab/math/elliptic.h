@@ -48,8 +48,8 @@
 // the atan term in double-double; it stops the duplication at tolerance 0.03 with degree-9
 // tails, and for -1 <= n < 0 uses the untransformed Legendre form (see that file). Elsewhere,
 // and for m < 0 or n = 0, the long-double path (ellint_pi_portable) runs, with s, c, R_C and
-// atan in long double. Rounding any of those to
-// double costs up to 3 ulp at the domain's corners (phi -> pi/2 with m, n -> 1). Both paths:
+// atan in long double. Rounding any of those to double costs up to 3 ulp at the domain's
+// corners (phi -> pi/2 with m, n -> 1). Both paths:
 // max 1 ulp on the 50-digit table and on a 9000-sample corner sweep against 50-digit Carlson
 // (RMS 0.09 / 0.08 ulp kernel, 0.24 / 0.06 portable): test_math
 // --gtest_filter='EllipticReference.Pi*'. Speed: bench_elliptic, Pi/mixed/own vs own-portable.
@@ -159,8 +159,9 @@ inline W rj_series_tail(W X, W Y, W Z) {
 // which stops its duplication at tolerance 0.03 instead of 0.01. The degree-N term of Carlson's
 // expansion is (a)_N/(b)_N times the degree-N part of (1 + E2 - E3 + E4 - E5)^-1/2: 1/(2N+1)
 // for R_F (a = 1/2, b = 3/2) and 3/(2N+3) for R_J (a = 3/2, b = 5/2); through degree 7 this
-// reproduces the coefficients above. EllipticReference.SeriesTailsOfDegree9 checks them against
-// 50-digit R_F and R_J.
+// reproduces the coefficients above (repeated here: written as the degree-7 tails plus the
+// degree-8 and -9 terms, the kernel measured 2% slower in bench_elliptic Pi/mixed).
+// EllipticReference.SeriesTailsOfDegree9 checks them against 50-digit R_F and R_J.
 template <class W>
 inline W rf_series_tail9(W E2, W E3) {
   const W e2 = E2 * (W(-1) / 10 + E2 * (W(1) / 24 + E2 * (W(-5) / 208 + E2 * (W(35) / 2176))));
