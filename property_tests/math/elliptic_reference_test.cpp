@@ -3,11 +3,15 @@
 // rounded value, and the same templates in cpp_bin_float_50 to kHighPrecisionRelative.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <bit>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "disklab/math/elliptic.h"
 #include "disklab/sequence/random.h"
@@ -91,11 +95,28 @@ TEST(EllipticReference, PiWithinTwoUlpOfTable) {
 }
 
 // ellint_pi<double> runs the double-double kernel where the CPU has AVX2 and FMA (elliptic.h,
-// FAST PATH), else the long-double path; the test above checks whichever this machine runs.
-// These two check each path by name, so both are held to the target on a machine with the
-// kernel (and the portable path everywhere).
-// Every Pi row that `eval` answers (std::nullopt for rows outside its path's domain; a NaN
-// answer fails) within kMaxUlp; returns the statistics for the report line.
+// FAST PATH; its AVX-512VL copy where the CPU has that too), else the long-double path; the
+// test above checks whichever this machine runs. These check each path by name, so every copy
+// this CPU runs is held to the target (and the portable path everywhere).
+constexpr math::detail::PiKernel kKernelCopies[] = {math::detail::PiKernel::kAvx2Fma,
+                                                    math::detail::PiKernel::kAvx512};
+
+// The copies of the kernel this CPU runs (none: the tests that need one skip).
+std::vector<math::detail::PiKernel> supported_kernels() {
+  std::vector<math::detail::PiKernel> out;
+  for (const math::detail::PiKernel k : kKernelCopies)
+    if (math::detail::pi_dd_kernel_supported(k)) out.push_back(k);
+  return out;
+}
+
+// Pi by the given copy of the kernel, with the complements exact (hi + lo), as the
+// three-argument ellint_pi passes them.
+double kernel_pi(math::detail::PiKernel kernel, double n, double phi, double m) {
+  const double omn = 1.0 - n, omm = 1.0 - m;
+  return math::detail::ellint_pi_dd(kernel, n, omn, math::detail::complement_error(n, omn), phi, m,
+                                    omm, math::detail::complement_error(m, omm));
+}
+
 template <class Eval>
 UlpStats check_pi_path(const char* label, Eval eval) {
   const auto rows = read_elliptic_table("elliptic_pi.csv", 3);
@@ -122,18 +143,105 @@ TEST(EllipticReference, PiPortablePathWithinTwoUlpOfTable) {
 }
 
 TEST(EllipticReference, PiDoubleDoubleKernelWithinTwoUlpOfTable) {
-  if (!math::detail::pi_dd_kernel_available())
+  const auto kernels = supported_kernels();
+  if (kernels.empty())
     GTEST_SKIP() << "this CPU lacks AVX2/FMA: ellint_pi runs the portable path (tested above)";
-  const UlpStats stats = check_pi_path("double-double kernel", [](double n, double phi, double m) {
-    // The kernel's domain (phi = 0 is answered before it); complements exact, as hi + lo,
-    // as the three-argument ellint_pi passes them.
-    if (!(phi > 0 && m >= 0)) return std::numeric_limits<double>::quiet_NaN();
-    const double omn = 1.0 - n, omm = 1.0 - m;
-    return math::detail::ellint_pi_dd(n, omn, math::detail::complement_error(n, omn), phi, m, omm,
-                                      math::detail::complement_error(m, omm));
-  });
-  // The kernel's domain covers most of the table.
-  EXPECT_GT(stats.count, read_elliptic_table("elliptic_pi.csv", 3).size() / 2);
+  for (const math::detail::PiKernel kernel : kernels) {
+    const std::string label =
+        std::string("double-double kernel, ") + math::detail::pi_dd_kernel_name(kernel);
+    const UlpStats stats = check_pi_path(label.c_str(), [kernel](double n, double phi, double m) {
+      // The kernel's domain (phi = 0 and m < 0 are answered before it).
+      return phi > 0 && m >= 0 ? std::optional<double>(kernel_pi(kernel, n, phi, m)) : std::nullopt;
+    });
+    // The kernel's domain covers most of the table.
+    EXPECT_GT(stats.count, read_elliptic_table("elliptic_pi.csv", 3).size() / 2) << label;
+  }
+}
+
+// ellint_pi<double> runs the best copy this CPU supports, and only supported copies answer.
+TEST(EllipticReference, PiRunsTheBestSupportedKernel) {
+  namespace d = math::detail;
+  const auto kernels = supported_kernels();
+  const d::PiKernel best = kernels.empty() ? d::PiKernel::kNone : kernels.back();
+  EXPECT_EQ(d::pi_dd_kernel(), best) << d::pi_dd_kernel_name(d::pi_dd_kernel());
+  EXPECT_EQ(d::pi_dd_kernel_available(), best != d::PiKernel::kNone);
+  EXPECT_FALSE(d::pi_dd_kernel_supported(d::PiKernel::kNone));
+  std::printf("Pi kernel in use: %s\n", d::pi_dd_kernel_name(best));
+  // ellint_pi's result is the kernel's, bit for bit. The portable path's differs in the last bit
+  // on some of these inputs (counted), so this shows that the kernel runs; which copy runs is
+  // pi_dd_kernel()'s answer above (the copies rarely differ: the corner sweep below counts it).
+  sequence::Pcg32 rng(2026, 6);
+  int portable_differs = 0;
+  for (int i = 0; i < 200; ++i) {
+    const double n = 2 * rng.next_double() - 1, phi = 1.5 * rng.next_double() + 0.05;
+    const double m = rng.next_double();
+    for (const d::PiKernel k : kKernelCopies) {
+      // The three-argument entry forms the same exact complements as kernel_pi passes.
+      const double got = kernel_pi(k, n, phi, m), got3 = d::ellint_pi_dd(k, n, phi, m);
+      if (d::pi_dd_kernel_supported(k)) {
+        EXPECT_TRUE(std::isfinite(got)) << d::pi_dd_kernel_name(k);
+        EXPECT_EQ(std::bit_cast<uint64_t>(got), std::bit_cast<uint64_t>(got3))
+            << d::pi_dd_kernel_name(k) << " n=" << n << " phi=" << phi << " m=" << m;
+      } else {
+        EXPECT_TRUE(std::isnan(got) && std::isnan(got3))
+            << d::pi_dd_kernel_name(k) << " is not supported here";
+      }
+    }
+    if (best != d::PiKernel::kNone) {
+      const double own = math::ellint_pi(n, phi, m);
+      EXPECT_EQ(std::bit_cast<uint64_t>(own), std::bit_cast<uint64_t>(kernel_pi(best, n, phi, m)))
+          << "n=" << n << " phi=" << phi << " m=" << m;
+      portable_differs += own != d::ellint_pi_portable(n, 1.0 - n, phi, m, 1.0 - m);
+    }
+  }
+  if (best != d::PiKernel::kNone) {
+    EXPECT_GT(portable_differs, 0);
+  }
+  std::printf("the portable path differs from the kernel on %d of 200 inputs\n", portable_differs);
+}
+
+// use_pi_dd_kernel, the benchmark's way to time a copy that is not the best: ellint_pi then runs
+// the chosen copy or, for kNone, the portable path (which differs from the kernel in the last bit
+// on some inputs, so the bitwise checks tell them apart); unsupported copies are refused.
+TEST(EllipticReference, PiKernelCanBeChosen) {
+  namespace d = math::detail;
+  const d::PiKernel before = d::pi_dd_kernel();
+  struct Restore {
+    d::PiKernel kernel;
+    ~Restore() { d::use_pi_dd_kernel(kernel); }
+  } restore{before};
+  auto same_bits = [](double a, double b) {
+    return std::bit_cast<uint64_t>(a) == std::bit_cast<uint64_t>(b);
+  };
+  sequence::Pcg32 rng(2026, 7);
+  std::vector<std::array<double, 3>> inputs(300);
+  for (auto& in : inputs)
+    in = {2 * rng.next_double() - 1, 1.5 * rng.next_double() + 0.05, rng.next_double()};
+  for (const d::PiKernel k : kKernelCopies) {
+    if (!d::pi_dd_kernel_supported(k)) {
+      EXPECT_FALSE(d::use_pi_dd_kernel(k)) << d::pi_dd_kernel_name(k);
+      EXPECT_EQ(d::pi_dd_kernel(), before);
+      continue;
+    }
+    ASSERT_TRUE(d::use_pi_dd_kernel(k)) << d::pi_dd_kernel_name(k);
+    EXPECT_EQ(d::pi_dd_kernel(), k);
+    for (const auto& [n, phi, m] : inputs)
+      EXPECT_TRUE(same_bits(math::ellint_pi(n, phi, m), kernel_pi(k, n, phi, m)))
+          << d::pi_dd_kernel_name(k) << " n=" << n << " phi=" << phi << " m=" << m;
+  }
+  ASSERT_TRUE(d::use_pi_dd_kernel(d::PiKernel::kNone));
+  EXPECT_FALSE(d::pi_dd_kernel_available());
+  int kernel_differs = 0;
+  for (const auto& [n, phi, m] : inputs) {
+    const double portable = d::ellint_pi_portable(n, 1.0 - n, phi, m, 1.0 - m);
+    EXPECT_TRUE(same_bits(math::ellint_pi(n, phi, m), portable))
+        << "kNone: n=" << n << " phi=" << phi << " m=" << m;
+    if (!supported_kernels().empty())
+      kernel_differs += !same_bits(portable, kernel_pi(supported_kernels()[0], n, phi, m));
+  }
+  if (!supported_kernels().empty()) {
+    EXPECT_GT(kernel_differs, 0) << "these inputs cannot tell the paths apart";
+  }
 }
 
 // The 2-ulp target away from the table's rows: a fixed pseudo-random sweep over the domain's
@@ -147,7 +255,13 @@ TEST(EllipticReference, PiAndFWithinTwoUlpOf50DigitsAtCorners) {
   constexpr int kSamples = 9000;  // 500 per (phi, m, n) corner combination
   sequence::Pcg32 rng(2026, 4);
   const bool kernel = math::detail::pi_dd_kernel_available();
+  const auto kernels = supported_kernels();
   UlpStats pi_stats, portable_stats, f_stats;
+  std::vector<UlpStats> copy_stats(kernels.size());
+  // Where two copies run, their results differ by rounding only: each is a double-double value
+  // within ~2^-58 relative of Pi rounded once, so they can round to neighbouring doubles (1 ulp
+  // apart), never further.
+  int copies_differ = 0;
   auto check = [](UlpStats& stats, const char* label, double own, double ref,
                   const std::string& where) {
     const int64_t d = ulp_distance(own, ref);
@@ -166,6 +280,15 @@ TEST(EllipticReference, PiAndFWithinTwoUlpOf50DigitsAtCorners) {
           where);
     check(portable_stats, "Pi (portable)",
           math::detail::ellint_pi_portable(n, 1.0 - n, phi, m, 1.0 - m), pi_ref, where);
+    double first_copy = 0;
+    for (std::size_t j = 0; j < kernels.size(); ++j) {
+      const double v = kernel_pi(kernels[j], n, phi, m);
+      check(copy_stats[j], math::detail::pi_dd_kernel_name(kernels[j]), v, pi_ref, where);
+      if (j == 0) first_copy = v;
+      const int64_t apart = std::llabs(ulp_distance(v, first_copy));
+      copies_differ += apart != 0;
+      EXPECT_LE(apart, 1) << "copies of the kernel disagree: " << where;
+    }
     if (kinds / (dom::kPhiKinds * dom::kMKinds) == 0)  // F once per (phi, m) sample
       check(f_stats, "F", math::ellint_f(phi, m),
             static_cast<double>(math::ellint_f(Real50(phi), Real50(m))), where);
@@ -176,19 +299,28 @@ TEST(EllipticReference, PiAndFWithinTwoUlpOf50DigitsAtCorners) {
       kernel ? "kernel" : "portable", (long long)pi_stats.max, pi_stats.rms(),
       (long long)portable_stats.max, portable_stats.rms(), (long long)f_stats.max, f_stats.rms(),
       pi_stats.count, portable_stats.count, f_stats.count);
+  for (std::size_t j = 0; j < kernels.size(); ++j)
+    std::printf("Corner sweep, kernel copy %s: max %lld ulp RMS %.3f\n",
+                math::detail::pi_dd_kernel_name(kernels[j]), (long long)copy_stats[j].max,
+                copy_stats[j].rms());
+  if (kernels.size() > 1)
+    std::printf("Kernel copies differ (by 1 ulp) on %d of %d samples\n", copies_differ, kSamples);
 }
 
-// The kernel's double-double elementary functions (elliptic_pi_dd.cpp) against cpp_bin_float_50.
+// The kernel's double-double elementary functions (elliptic_pi_dd_kernel.h), in every copy this
+// CPU runs, against cpp_bin_float_50.
 // Their error enters Pi once, scaled by at most ~1 (no cancellation between Pi's terms), so each
 // must stay well under a correctly rounded double's 2^-53. Bounds from their error analysis (the
 // measured maxima are printed): atan, log and R_C carry only first-order corrections and series
 // tails below 2^-58, so 2^-55; sin and cos round their Taylor correction (at most 0.103 of the
 // value at |t| = pi/4) three times, 0.31 * 2^-53 < 2^-54.
 TEST(EllipticReference, KernelElementaryFunctionsWithin2em55Of50Digits) {
-  if (!math::detail::pi_dd_kernel_available())
+  const auto kernels = supported_kernels();
+  if (kernels.empty())
     GTEST_SKIP() << "this CPU lacks AVX2/FMA: the kernel and its functions are not used";
   namespace dom = elliptic_domain;
-  using DDv = math::detail::DoubleDouble;
+  namespace d = math::detail;
+  using DDv = d::DoubleDouble;
   const Real50 kBound = Real50(std::ldexp(1.0, -55)), kSinCosBound = Real50(std::ldexp(1.0, -54));
   auto value = [](DDv x) { return Real50(x.hi) + Real50(x.lo); };
   auto rel = [](const Real50& got, const Real50& ref) { return Real50(abs((got - ref) / ref)); };
@@ -197,25 +329,12 @@ TEST(EllipticReference, KernelElementaryFunctionsWithin2em55Of50Digits) {
   for (int i = 0; i < 3000; ++i) {
     // sin, cos of phi in [0, pi/2] (phi > 0: the kernel's domain), corners included.
     const double phi = dom::phi(i % dom::kPhiKinds, rng.next_double());
-    if (phi > 0) {
-      DDv s, c;
-      math::detail::pi_dd_sincos(phi, s, c);
-      const Real50 es = rel(value(s), sin(Real50(phi))), ec = rel(value(c), cos(Real50(phi)));
-      worst_sc = std::max(worst_sc, std::max(es, ec));
-      EXPECT_LE(std::max(es, ec), kSinCosBound) << "sincos phi=" << phi;
-    }
     // atan of x = 10^(-8..8) carrying a lo part.
     const double xh = std::pow(10.0, 16 * rng.next_double() - 8);
     const DDv x = {xh, xh * 0x1p-54 * (2 * rng.next_double() - 1)};
-    const Real50 ea = rel(value(math::detail::pi_dd_atan(x)), atan(value(x)));
-    worst_atan = std::max(worst_atan, ea);
-    EXPECT_LE(ea, kBound) << "atan x=" << xh;
     // log of x in [1 + 2^-40, 1e9] (the kernel's (1 + r)/(1 - r), r in [0.1, 1)).
     const double yh = 1 + std::pow(10.0, 21 * rng.next_double() - 12);
     const DDv y = {yh, yh * 0x1p-54 * (2 * rng.next_double() - 1)};
-    const Real50 el = rel(value(math::detail::pi_dd_log(y)), log(value(y)));
-    worst_log = std::max(worst_log, el);
-    EXPECT_LE(el, kBound) << "log x=" << yh;
     // R_C(1, 1 + e) - 1 for e in +-[0.01, 1) and e -> -1, error relative to R_C.
     const double u = rng.next_double();
     const double e = i % 3 == 0   ? 0.01 + 0.99 * u
@@ -223,14 +342,31 @@ TEST(EllipticReference, KernelElementaryFunctionsWithin2em55Of50Digits) {
                                   : -(1 - std::pow(10.0, -8 * u));
     const Real50 E(e), r = sqrt(abs(E));
     const Real50 rc = e > 0 ? Real50(atan(r) / r) : Real50(atanh(r) / r);
-    const Real50 er = abs((value(math::detail::pi_dd_rc_minus_1({e, 0})) + 1 - rc) / rc);
-    worst_rc = std::max(worst_rc, er);
-    EXPECT_LE(er, kBound) << "R_C e=" << e;
+    const Real50 atan_ref = atan(value(x)), log_ref = log(value(y));
+    for (const d::PiKernel k : kernels) {
+      const char* name = d::pi_dd_kernel_name(k);
+      if (phi > 0) {
+        DDv s, c;
+        d::pi_dd_sincos(k, phi, s, c);
+        const Real50 es = rel(value(s), sin(Real50(phi))), ec = rel(value(c), cos(Real50(phi)));
+        worst_sc = std::max(worst_sc, std::max(es, ec));
+        EXPECT_LE(std::max(es, ec), kSinCosBound) << name << " sincos phi=" << phi;
+      }
+      const Real50 ea = rel(value(d::pi_dd_atan(k, x)), atan_ref);
+      worst_atan = std::max(worst_atan, ea);
+      EXPECT_LE(ea, kBound) << name << " atan x=" << xh;
+      const Real50 el = rel(value(d::pi_dd_log(k, y)), log_ref);
+      worst_log = std::max(worst_log, el);
+      EXPECT_LE(el, kBound) << name << " log x=" << yh;
+      const Real50 er = abs((value(d::pi_dd_rc_minus_1(k, {e, 0})) + 1 - rc) / rc);
+      worst_rc = std::max(worst_rc, er);
+      EXPECT_LE(er, kBound) << name << " R_C e=" << e;
+    }
   }
   std::printf(
-      "kernel functions, max relative error: sincos %.2g, atan %.2g, log %.2g, R_C %.2g "
-      "(bounds 2^-54, 2^-55 = %.2g)\n",
-      double(worst_sc), double(worst_atan), double(worst_log), double(worst_rc),
+      "kernel functions (%zu copies), max relative error: sincos %.2g, atan %.2g, log %.2g, "
+      "R_C %.2g (bounds 2^-54, 2^-55 = %.2g)\n",
+      kernels.size(), double(worst_sc), double(worst_atan), double(worst_log), double(worst_rc),
       std::ldexp(1.0, -55));
 }
 

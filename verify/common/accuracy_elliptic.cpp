@@ -190,8 +190,10 @@ EllipticAccuracy elliptic_accuracy(const std::filesystem::path& reference_dir) {
      << "*double policy* = "
      << "`promote_double<false>`; *default policy* computes in long double. Pi *own* is "
      << "`ellint_pi` as called (this run: "
-     << (math::detail::pi_dd_kernel_available() ? "the double-double AVX2+FMA kernel"
-                                                : "the portable long-double path")
+     << (math::detail::pi_dd_kernel_available()
+             ? std::string("the double-double kernel, ") +
+                   math::detail::pi_dd_kernel_name(math::detail::pi_dd_kernel()) + " copy"
+             : std::string("the portable long-double path"))
      << "); *own-portable* is the long-double path `ellint_pi_portable`.\n\n"
      << "| function | implementation | subset | rows | failures | max ulp | RMS ulp | rows > 2 ulp "
         "| worst input (n, phi, m) |\n|---|---|---|---:|---:|---:|---:|---:|---|\n";

@@ -42,11 +42,12 @@
 // the 50-digit tables). Where long double is no wider than double the loops run in double.
 // Any other Real (e.g. cpp_bin_float_50) computes everything in Real.
 //
-// FAST PATH (Pi in double only): on x86-64 CPUs with AVX2 and FMA (checked once at run time),
-// ellint_pi<double> with m in [0, 1] and phi in (0, pi/2] runs a double-double version of the
-// same loop (lib/src/math/elliptic_pi_dd.cpp), which also carries s, c, the first steps' R_C and
-// the atan term in double-double; it stops the duplication at tolerance 0.03 with degree-9
-// tails, and for -1 <= n < 0 uses the untransformed Legendre form (see that file). Elsewhere,
+// FAST PATH (Pi in double only): on x86-64 CPUs with AVX2 and FMA (checked once at run time;
+// a second copy uses AVX-512VL where present), ellint_pi<double> with m in [0, 1] and phi in
+// (0, pi/2] runs a double-double version of the same loop (lib/src/math/elliptic_pi_dd_kernel.h),
+// which also carries s, c, the first steps' R_C and the atan term in double-double; it stops the
+// duplication at tolerance 0.03 with degree-9 tails, and for -1 <= n < 0 uses the
+// untransformed Legendre form (see that file). Elsewhere,
 // and for m < 0 or n = 0, the long-double path (ellint_pi_portable) runs, with s, c, R_C and
 // atan in long double. Rounding any of those to double costs up to 3 ulp at the domain's
 // corners (phi -> pi/2 with m, n -> 1). Both paths:
@@ -399,24 +400,44 @@ inline Real ellint_f_core(Real phi, Real m, Real one_minus_m) {
   return static_cast<Real>(a.s * rf_legendre<Real>(a.c, a.c2, a.delta2));
 }
 
-// The double-double kernel for Pi in double (lib/src/math/elliptic_pi_dd.cpp; see FAST PATH
-// above). ellint_pi_dd takes 1 - n and 1 - m as hi + lo pairs (lo = 0 when the caller's
-// complement is taken as exact), phi in (0, pi/2], m in [0, 1], n <= 1, all finite. It returns
-// NaN if pi_dd_kernel_available() is false.
-bool pi_dd_kernel_available() noexcept;
-extern const bool pi_dd_kernel_flag;  // the same, read without a call
+// The double-double kernel for Pi in double (lib/src/math/elliptic_pi_dd_kernel.h; see FAST
+// PATH above), compiled twice: for AVX2 + FMA, and for AVX2 + FMA + AVX-512VL (whose reciprocal
+// estimate spares a division per duplication step). The best copy the CPU runs is chosen once,
+// at start-up: pi_dd_kernel() (kNone: none, the portable path only).
+enum class PiKernel { kNone, kAvx2Fma, kAvx512 };
+PiKernel pi_dd_kernel() noexcept;
+bool pi_dd_kernel_supported(PiKernel kernel) noexcept;    // compiled in, and this CPU runs it
+const char* pi_dd_kernel_name(PiKernel kernel) noexcept;  // "AVX2+FMA", ...
+bool pi_dd_kernel_available() noexcept;                   // pi_dd_kernel() != kNone
+// For tests and benchmarks: makes ellint_pi<double> run the given copy from now on (kNone: the
+// portable path). Not thread-safe (no evaluation may run meanwhile); false, and no change,
+// where the copy is not supported.
+bool use_pi_dd_kernel(PiKernel kernel) noexcept;
+// The copy in use, as ellint_pi<double> calls it (nullptr: none): Pi from n, phi, m in its
+// domain (pi_dd_domain), with 1 - n and 1 - m formed exactly (as hi + lo pairs) where used.
+using PiDdEntry = double (*)(double n, double phi, double m) noexcept;
+extern PiDdEntry pi_dd_entry;
+// ellint_pi_dd takes 1 - n and 1 - m as hi + lo pairs (lo = 0 when the caller's complement is
+// taken as exact), phi in (0, pi/2], m in [0, 1], n <= 1, all finite, and runs the copy in use;
+// the forms taking a PiKernel run the given copy (for tests and benchmarks; the last one is that
+// copy's pi_dd_entry). NaN where there is none.
 double ellint_pi_dd(double n, double one_minus_n, double one_minus_n_lo, double phi, double m,
                     double one_minus_m, double one_minus_m_lo) noexcept;
-// The kernel's double-double elementary functions, exported for their accuracy tests (callable
-// only where pi_dd_kernel_available(); results as {hi, lo} pairs): sin and cos of phi in
-// [0, pi/2], atan of x >= 0, log of x >= 1, and R_C(1, 1 + e) - 1 for 0.01 <= |e| < 1.
+double ellint_pi_dd(PiKernel kernel, double n, double one_minus_n, double one_minus_n_lo,
+                    double phi, double m, double one_minus_m, double one_minus_m_lo) noexcept;
+double ellint_pi_dd(PiKernel kernel, double n, double phi, double m) noexcept;
+// The kernel's double-double elementary functions in the given copy, exported for their
+// accuracy tests (results as {hi, lo} pairs; NaN where the copy is not supported): sin and cos
+// of phi in [0, pi/2], atan of x >= 0, log of x >= 1, and R_C(1, 1 + e) - 1 for
+// 0.01 <= |e| < 1.
 struct DoubleDouble {
   double hi, lo;
 };
-void pi_dd_sincos(double phi, DoubleDouble& sin_phi, DoubleDouble& cos_phi) noexcept;
-DoubleDouble pi_dd_atan(DoubleDouble x) noexcept;
-DoubleDouble pi_dd_log(DoubleDouble x) noexcept;
-DoubleDouble pi_dd_rc_minus_1(DoubleDouble e) noexcept;
+void pi_dd_sincos(PiKernel kernel, double phi, DoubleDouble& sin_phi,
+                  DoubleDouble& cos_phi) noexcept;
+DoubleDouble pi_dd_atan(PiKernel kernel, DoubleDouble x) noexcept;
+DoubleDouble pi_dd_log(PiKernel kernel, DoubleDouble x) noexcept;
+DoubleDouble pi_dd_rc_minus_1(PiKernel kernel, DoubleDouble e) noexcept;
 
 // The rounding error of one_minus_x = fl(1 - x), exactly: (1 - x) - one_minus_x (Knuth's
 // two-sum error of 1 + (-x)).
@@ -425,11 +446,14 @@ inline double complement_error(double x, double one_minus_x) {
   return (1.0 - (one_minus_x - bb)) + (-x - bb);
 }
 
-// Whether the kernel covers these (already validated, phi in [0, pi/2]) arguments. n = 0 stays
-// on the portable path, which answers it with F itself (Pi(0; phi|m) == F(phi|m) exactly).
-inline bool pi_dd_covers(double n, double one_minus_n, double phi, double m) {
-  return phi > 0 && m >= 0 && n != 0 && std::abs(n) < std::numeric_limits<double>::infinity() &&
-         one_minus_n < std::numeric_limits<double>::infinity() && pi_dd_kernel_flag;
+// Whether these (already validated: phi in [0, pi/2], m <= 1, n <= 1) arguments are in the
+// kernel's domain. n = 0 stays on the portable path, which answers it with F itself
+// (Pi(0; phi|m) == F(phi|m) exactly). The first form also checks a caller's 1 - n.
+inline bool pi_dd_domain(double n, double phi, double m) {
+  return phi > 0 && m >= 0 && n != 0 && n > -std::numeric_limits<double>::infinity();
+}
+inline bool pi_dd_domain(double n, double one_minus_n, double phi, double m) {
+  return pi_dd_domain(n, phi, m) && one_minus_n < std::numeric_limits<double>::infinity();
 }
 
 // Pi at phi in [0, pi/2], m <= 1, n <= 1, with the Carlson loops in work_t<Real> (for double:
@@ -477,7 +501,7 @@ template <class Real>
 inline Real ellint_pi_core(Real n, Real one_minus_n, Real phi, Real m, Real one_minus_m,
                            Real one_minus_n_lo = 0, Real one_minus_m_lo = 0) {
   if constexpr (std::is_same_v<Real, double>) {
-    if (pi_dd_covers(n, one_minus_n, phi, m))
+    if (pi_dd_entry != nullptr && pi_dd_domain(n, one_minus_n, phi, m))
       return ellint_pi_dd(n, one_minus_n, one_minus_n_lo, phi, m, one_minus_m, one_minus_m_lo);
   }
   return ellint_pi_portable(n, one_minus_n, phi, m, one_minus_m);
@@ -536,9 +560,9 @@ inline Real ellint_pi(Real n, Real phi, Real m) {
     // The fast path takes the complements exactly (their rounding errors as lo parts, Knuth's
     // two-sum); for large |n| the rounding of 1 - n alone would be half an ulp of the result.
     if (m <= 1 && n <= 1 && detail::in_phi_domain(phi)) {
-      const double omn = 1 - n, omm = 1 - m;
-      return detail::ellint_pi_core(n, omn, phi, m, omm, detail::complement_error(n, omn),
-                                    detail::complement_error(m, omm));
+      const detail::PiDdEntry kernel = detail::pi_dd_entry;
+      if (kernel != nullptr && detail::pi_dd_domain(n, phi, m)) return kernel(n, phi, m);
+      return detail::ellint_pi_portable(n, 1 - n, phi, m, 1 - m);
     }
   }
   return ellint_pi(n, Real(1 - n), phi, m, Real(1 - m));

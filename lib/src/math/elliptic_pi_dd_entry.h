@@ -1,0 +1,32 @@
+// The entry points of the two compiled copies of the double-double Pi kernel
+// (elliptic_pi_dd_kernel.h): pi_avx2 (AVX2 + FMA) and pi_avx512 (the same plus AVX-512VL).
+// Private to lib/src/math; elliptic_pi_dd.cpp dispatches to them.
+#pragma once
+
+#include "disklab/math/elliptic.h"
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define DISKLAB_PI_DD 1
+#else
+#define DISKLAB_PI_DD 0
+#endif
+
+#define DISKLAB_PI_DD_ENTRY_POINTS                                                \
+  double pi(double n, DoubleDouble one_minus_n, double phi, double m,             \
+            DoubleDouble one_minus_m) noexcept;                                   \
+  double pi(double n, double phi, double m) noexcept;                             \
+  void sincos(double phi, DoubleDouble& sin_phi, DoubleDouble& cos_phi) noexcept; \
+  DoubleDouble atan(DoubleDouble x) noexcept;                                     \
+  DoubleDouble log(DoubleDouble x) noexcept;                                      \
+  DoubleDouble rc_minus_1(DoubleDouble e) noexcept;
+
+namespace disklab::math::detail {
+namespace pi_avx2 {
+DISKLAB_PI_DD_ENTRY_POINTS
+}  // namespace pi_avx2
+namespace pi_avx512 {
+DISKLAB_PI_DD_ENTRY_POINTS
+}  // namespace pi_avx512
+}  // namespace disklab::math::detail
+
+#undef DISKLAB_PI_DD_ENTRY_POINTS
