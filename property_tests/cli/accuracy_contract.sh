@@ -81,7 +81,8 @@ for fn in ("F", "Pi"):
 for r in ell:
     if int(r["rows"]) <= 0:
         bad.append("elliptic %s %s %s: no rows" % (r["function"], r["implementation"], r["subset"]))
-    if r["implementation"] == "own" and not (int(r["max_ulp"]) <= own_ulp and int(r["failures"]) == 0
+    # own, own-portable and (on AVX-512VL CPUs) own-avx2: every path of ours is held to it.
+    if r["implementation"].startswith("own") and not (int(r["max_ulp"]) <= own_ulp and int(r["failures"]) == 0
                                              and int(r["rows_over_2ulp"]) == 0):
         bad.append("own %s (%s): max %s ulp, %s failures; target %d ulp" % (r["function"], r["subset"], r["max_ulp"], r["failures"], own_ulp))
 for b in bad:

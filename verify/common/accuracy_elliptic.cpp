@@ -156,11 +156,21 @@ EllipticAccuracy elliptic_accuracy(const std::filesystem::path& reference_dir) {
     all.push_back(measure(f_rows, "F", name, "all rows", eval));
   for (const auto& [name, eval] : pi_impls)
     all.push_back(measure(pi_rows, "Pi", name, "all rows", eval));
-  // "own" is ellint_pi as a caller gets it (the double-double kernel on AVX2+FMA CPUs); this row
-  // holds the portable long-double path to the same table on every machine.
+  // "own" is ellint_pi as a caller gets it (the double-double kernel on AVX2+FMA CPUs, its
+  // AVX-512VL copy where the CPU has that); these rows hold the portable long-double path to the
+  // same table on every machine, and the kernel's AVX2+FMA copy where it is not the one in use.
   all.push_back(measure(pi_rows, "Pi", "own-portable", "all rows", [](const Row& r) {
     return math::detail::ellint_pi_portable(r.n, 1.0 - r.n, r.phi, r.m, 1.0 - r.m);
   }));
+  namespace d = math::detail;
+  const bool avx2_row =
+      d::pi_dd_kernel() == d::PiKernel::kAvx512 && d::pi_dd_kernel_supported(d::PiKernel::kAvx2Fma);
+  if (avx2_row)
+    all.push_back(measure(pi_rows, "Pi", "own-avx2", "all rows", [](const Row& r) {
+      return d::pi_dd_domain(r.n, r.phi, r.m)
+                 ? d::ellint_pi_dd(d::PiKernel::kAvx2Fma, r.n, r.phi, r.m)
+                 : math::ellint_pi(r.n, r.phi, r.m);
+    }));
   for (std::size_t i = 1; i < f_impls.size(); ++i)
     all.push_back(measure(f_at_k, "F", f_impls[i].first, kSubsetAtK, f_impls[i].second));
   for (std::size_t i = 1; i < pi_impls.size(); ++i)
@@ -194,7 +204,10 @@ EllipticAccuracy elliptic_accuracy(const std::filesystem::path& reference_dir) {
              ? std::string("the double-double kernel, ") +
                    math::detail::pi_dd_kernel_name(math::detail::pi_dd_kernel()) + " copy"
              : std::string("the portable long-double path"))
-     << "); *own-portable* is the long-double path `ellint_pi_portable`.\n\n"
+     << "); *own-portable* is the long-double path `ellint_pi_portable`"
+     << (avx2_row ? "; *own-avx2* is the kernel's AVX2+FMA copy (what CPUs without AVX-512VL run)"
+                  : "")
+     << ".\n\n"
      << "| function | implementation | subset | rows | failures | max ulp | RMS ulp | rows > 2 ulp "
         "| worst input (n, phi, m) |\n|---|---|---|---:|---:|---:|---:|---:|---|\n";
   for (const Stats& s : all) {
