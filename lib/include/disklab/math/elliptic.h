@@ -448,7 +448,7 @@ inline double complement_error(double x, double one_minus_x) {
 
 // Whether these (already validated: phi in [0, pi/2], m <= 1, n <= 1) arguments are in the
 // kernel's domain. n = 0 stays on the portable path, which answers it with F itself
-// (Pi(0; phi|m) == F(phi|m) exactly). The first form also checks a caller's 1 - n.
+// (Pi(0; phi|m) == F(phi|m) exactly). The second form also checks a caller's 1 - n.
 inline bool pi_dd_domain(double n, double phi, double m) {
   return phi > 0 && m >= 0 && n != 0 && n > -std::numeric_limits<double>::infinity();
 }
