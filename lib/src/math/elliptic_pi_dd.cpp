@@ -37,18 +37,37 @@ bool runs(PiKernel kernel) {
   return false;
 }
 
-PiDdEntry entry_of(PiKernel kernel) {
+// One copy's entry points (elliptic_pi_dd_entry.h).
+struct Copy {
+  double (*pi_pairs)(double, DoubleDouble, double, double, DoubleDouble) noexcept;
+  PiDdEntry pi;
+  void (*sincos)(double, DoubleDouble&, DoubleDouble&) noexcept;
+  DoubleDouble (*atan)(DoubleDouble) noexcept;
+  DoubleDouble (*log)(DoubleDouble) noexcept;
+  DoubleDouble (*rc_minus_1)(DoubleDouble) noexcept;
+};
 #if DISKLAB_PI_DD
-  switch (kernel) {
-    case PiKernel::kAvx2Fma:
-      return static_cast<PiDdEntry>(&pi_avx2::pi);
-    case PiKernel::kAvx512:
-      return static_cast<PiDdEntry>(&pi_avx512::pi);
-    case PiKernel::kNone:
-      break;
+#define DL_COPY(ns)                                                     \
+  Copy {                                                                \
+    &ns::pi, &ns::pi, &ns::sincos, &ns::atan, &ns::log, &ns::rc_minus_1 \
   }
+constexpr Copy kAvx2Copy = DL_COPY(pi_avx2), kAvx512Copy = DL_COPY(pi_avx512);
+#undef DL_COPY
 #endif
+
+// The given copy's entry points, or nullptr where this CPU (or build) does not run it.
+const Copy* copy_of(PiKernel kernel) {
+  if (!runs(kernel)) return nullptr;
+#if DISKLAB_PI_DD
+  return kernel == PiKernel::kAvx512 ? &kAvx512Copy : &kAvx2Copy;
+#else
   return nullptr;
+#endif
+}
+
+PiDdEntry entry_of(PiKernel kernel) {
+  const Copy* copy = copy_of(kernel);
+  return copy != nullptr ? copy->pi : nullptr;
 }
 
 // The best copy this CPU runs (initialised after cpu_support: same translation unit, later).
@@ -88,80 +107,41 @@ bool use_pi_dd_kernel(PiKernel kernel) noexcept {
   return true;
 }
 
-#if DISKLAB_PI_DD
-
 double ellint_pi_dd(double n, double one_minus_n, double one_minus_n_lo, double phi, double m,
                     double one_minus_m, double one_minus_m_lo) noexcept {
   return ellint_pi_dd(kernel_in_use, n, one_minus_n, one_minus_n_lo, phi, m, one_minus_m,
                       one_minus_m_lo);
 }
-
 double ellint_pi_dd(PiKernel kernel, double n, double one_minus_n, double one_minus_n_lo,
                     double phi, double m, double one_minus_m, double one_minus_m_lo) noexcept {
-  const DoubleDouble omn = {one_minus_n, one_minus_n_lo}, omm = {one_minus_m, one_minus_m_lo};
-  switch (kernel) {
-    case PiKernel::kAvx512:
-      if (runs(kernel)) return pi_avx512::pi(n, omn, phi, m, omm);
-      break;
-    case PiKernel::kAvx2Fma:
-      if (runs(kernel)) return pi_avx2::pi(n, omn, phi, m, omm);
-      break;
-    case PiKernel::kNone:
-      break;
-  }
-  return kNaN;
+  const Copy* copy = copy_of(kernel);
+  return copy != nullptr ? copy->pi_pairs(n, {one_minus_n, one_minus_n_lo}, phi, m,
+                                          {one_minus_m, one_minus_m_lo})
+                         : kNaN;
 }
-
 double ellint_pi_dd(PiKernel kernel, double n, double phi, double m) noexcept {
-  const PiDdEntry entry = runs(kernel) ? entry_of(kernel) : nullptr;
-  return entry != nullptr ? entry(n, phi, m) : kNaN;
+  const Copy* copy = copy_of(kernel);
+  return copy != nullptr ? copy->pi(n, phi, m) : kNaN;
 }
 
 void pi_dd_sincos(PiKernel kernel, double phi, DoubleDouble& sin_phi,
                   DoubleDouble& cos_phi) noexcept {
-  if (!runs(kernel)) {
+  if (const Copy* copy = copy_of(kernel))
+    copy->sincos(phi, sin_phi, cos_phi);
+  else
     sin_phi = cos_phi = {kNaN, 0};
-    return;
-  }
-  (kernel == PiKernel::kAvx512 ? pi_avx512::sincos : pi_avx2::sincos)(phi, sin_phi, cos_phi);
 }
 DoubleDouble pi_dd_atan(PiKernel kernel, DoubleDouble x) noexcept {
-  if (!runs(kernel)) return {kNaN, 0};
-  return kernel == PiKernel::kAvx512 ? pi_avx512::atan(x) : pi_avx2::atan(x);
+  const Copy* copy = copy_of(kernel);
+  return copy != nullptr ? copy->atan(x) : DoubleDouble{kNaN, 0};
 }
 DoubleDouble pi_dd_log(PiKernel kernel, DoubleDouble x) noexcept {
-  if (!runs(kernel)) return {kNaN, 0};
-  return kernel == PiKernel::kAvx512 ? pi_avx512::log(x) : pi_avx2::log(x);
+  const Copy* copy = copy_of(kernel);
+  return copy != nullptr ? copy->log(x) : DoubleDouble{kNaN, 0};
 }
 DoubleDouble pi_dd_rc_minus_1(PiKernel kernel, DoubleDouble e) noexcept {
-  if (!runs(kernel)) return {kNaN, 0};
-  return kernel == PiKernel::kAvx512 ? pi_avx512::rc_minus_1(e) : pi_avx2::rc_minus_1(e);
+  const Copy* copy = copy_of(kernel);
+  return copy != nullptr ? copy->rc_minus_1(e) : DoubleDouble{kNaN, 0};
 }
-
-#else  // no x86-64 kernel in this build: the portable path is always used
-
-double ellint_pi_dd(double, double, double, double, double, double, double) noexcept {
-  return kNaN;
-}
-double ellint_pi_dd(PiKernel, double, double, double, double, double, double, double) noexcept {
-  return kNaN;
-}
-double ellint_pi_dd(PiKernel, double, double, double) noexcept {
-  return kNaN;
-}
-void pi_dd_sincos(PiKernel, double, DoubleDouble& sin_phi, DoubleDouble& cos_phi) noexcept {
-  sin_phi = cos_phi = {kNaN, 0};
-}
-DoubleDouble pi_dd_atan(PiKernel, DoubleDouble) noexcept {
-  return {kNaN, 0};
-}
-DoubleDouble pi_dd_log(PiKernel, DoubleDouble) noexcept {
-  return {kNaN, 0};
-}
-DoubleDouble pi_dd_rc_minus_1(PiKernel, DoubleDouble) noexcept {
-  return {kNaN, 0};
-}
-
-#endif
 
 }  // namespace disklab::math::detail
