@@ -215,18 +215,6 @@ std::string strata_lines(disk::Strategy strategy, uint32_t square_points) {
   return out.str();
 }
 
-// --out must name a file in an existing, writable folder: checked before any work so a bad path
-// fails fast with exit 2, and AtomicFile guarantees nothing partial appears on later errors.
-void check_out_path(const std::string& out) {
-  const fs::path p(out);
-  if (fs::is_directory(p)) throw UsageError("--out: '" + out + "' is a folder, not a file");
-  const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
-  if (!fs::is_directory(dir))
-    throw UsageError("--out: folder '" + dir.string() + "' does not exist");
-  if (::access(dir.c_str(), W_OK) != 0)
-    throw UsageError("--out: folder '" + dir.string() + "' is not writable");
-}
-
 std::string plot_title(const PointsState& s, uint32_t square_points) {
   std::string t = s.strategy.empty() ? "square" : s.strategy;
   t +=
@@ -321,17 +309,8 @@ std::string ellipse_title(const PointsState& s) {
          std::to_string(s.seed) + "; " + describe_scene(s.ellipse);
 }
 
-uint64_t parse_seed(const std::string& text) {
-  uint64_t value = 0;
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  if (text.empty() || ec != std::errc() || ptr != end)
-    throw UsageError("--seed: '" + text + "' is not an unsigned 64-bit integer");
-  return value;
-}
-
 void validate(PointsState& s) {
-  s.seed = parse_seed(s.seed_text);
+  s.seed = parse_u64(s.seed_text, "--seed");
   check_ellipse_exclusive(s.ellipse, s.strategy);
   if (!s.ellipse.map.empty()) make_ellipse_map(s.ellipse);  // validates the scene
   if (!s.strategy.empty()) require_one_of(s.strategy, disk::strategy_names(), "--strategy");
@@ -343,7 +322,7 @@ void validate(PointsState& s) {
     throw UsageError("--count: " + std::to_string(s.count) + " is above the limit " +
                      std::to_string(cap) + " for --format " + s.format);
   if (s.format == "png" && s.out.empty()) throw UsageError("--format png needs --out FILE.png");
-  if (!s.out.empty()) check_out_path(s.out);
+  if (!s.out.empty()) check_out_file(s.out);
 }
 
 // Writes the CSV or PNG for `s` to `out` (atomically), or the CSV to stdout when out is empty.

@@ -51,40 +51,6 @@ struct Row {
   double mean = 0.0, std_error = 0.0, min = 0.0, max = 0.0;
 };
 
-uint64_t parse_seed(const std::string& text) {
-  uint64_t value = 0;
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  if (text.empty() || ec != std::errc() || ptr != end)
-    throw UsageError("--seed: '" + text + "' is not an unsigned 64-bit integer");
-  return value;
-}
-
-std::vector<std::string> selected_names(const std::string& only) {
-  const std::vector<std::string> all = sequence::sequence_names();
-  if (only.empty()) return all;
-  std::vector<std::string> names;
-  std::size_t start = 0;
-  while (start <= only.size()) {
-    const std::size_t comma = std::min(only.find(',', start), only.size());
-    const std::string name = only.substr(start, comma - start);
-    require_one_of(name, all, "--sequences");
-    names.push_back(name);
-    start = comma + 1;
-  }
-  return names;
-}
-
-void check_out_path(const std::string& out) {
-  const fs::path p(out);
-  if (fs::is_directory(p)) throw UsageError("--out: '" + out + "' is a folder, not a file");
-  const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
-  if (!fs::is_directory(dir))
-    throw UsageError("--out: folder '" + dir.string() + "' does not exist");
-  if (::access(dir.c_str(), W_OK) != 0)
-    throw UsageError("--out: folder '" + dir.string() + "' is not writable");
-}
-
 // Mean, standard error, min and max of the discrepancy over seeds seed .. seed + seeds - 1.
 // Parallel over (sequence, seed) pairs; each builds its own instance (thread-safe by contract).
 std::vector<Row> compute(const std::vector<std::string>& names, uint32_t count, int seeds,
@@ -168,7 +134,7 @@ std::string to_json(const std::vector<Row>& rows, uint32_t count, int seeds, uin
 }
 
 int run_sequences(SequencesState s) {
-  s.seed = parse_seed(s.seed_text);
+  s.seed = parse_u64(s.seed_text, "--seed");
   if (s.count <= 0 || s.count > kMaxCount)
     throw UsageError("--count: " + std::to_string(s.count) + " must be in [1, " +
                      std::to_string(kMaxCount) + "] (the discrepancy costs N^2)");
@@ -176,8 +142,9 @@ int run_sequences(SequencesState s) {
     throw UsageError("--seeds: " + std::to_string(s.seeds) + " must be in [1, " +
                      std::to_string(kMaxSeeds) + "]");
   require_one_of(s.format, {"md", "csv", "json"}, "--format");
-  const std::vector<std::string> names = selected_names(s.only);
-  if (!s.out.empty()) check_out_path(s.out);
+  const std::vector<std::string> names =
+      parse_name_list(s.only, sequence::sequence_names(), "--sequences");
+  if (!s.out.empty()) check_out_file(s.out);
   const auto count = static_cast<uint32_t>(s.count);
   const int seeds = static_cast<int>(s.seeds);
   const std::vector<Row> rows = compute(names, count, seeds, s.seed);

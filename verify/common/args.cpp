@@ -1,5 +1,6 @@
 #include "common/args.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -72,6 +73,34 @@ void require_positive(double value, std::string_view what) {
     msg << what << ": " << value << " must be positive";
     throw UsageError(msg.str());
   }
+}
+
+uint64_t parse_u64(std::string_view text, std::string_view what) {
+  uint64_t value = 0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (text.empty() || ec != std::errc() || ptr != end)
+    throw UsageError(std::string(what) + ": '" + std::string(text) +
+                     "' is not an unsigned 64-bit integer");
+  return value;
+}
+
+std::vector<std::string> parse_name_list(std::string_view text,
+                                         const std::vector<std::string>& valid,
+                                         std::string_view what) {
+  if (text.empty()) return valid;
+  std::vector<std::string> names;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', start), text.size());
+    const std::string name = trim(text.substr(start, comma - start));
+    require_one_of(name, valid, what);
+    for (const std::string& n : names)
+      if (n == name) throw UsageError(std::string(what) + ": '" + name + "' is listed twice");
+    names.push_back(name);
+    start = comma + 1;
+  }
+  return names;
 }
 
 void require_one_of(std::string_view name, const std::vector<std::string>& valid,

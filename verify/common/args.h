@@ -25,6 +25,15 @@ void require_range(double value, double lo, double hi, std::string_view what);
 // Throws unless value > 0.
 void require_positive(double value, std::string_view what);
 
+// An unsigned 64-bit decimal integer (a seed); `what` names the option.
+uint64_t parse_u64(std::string_view text, std::string_view what);
+
+// A comma-separated list of names, each one of `valid`, without repeats, in the given order;
+// empty text gives `valid` itself (the default "all").
+std::vector<std::string> parse_name_list(std::string_view text,
+                                         const std::vector<std::string>& valid,
+                                         std::string_view what);
+
 // Throws unless `name` is one of `valid` (message lists them).
 void require_one_of(std::string_view name, const std::vector<std::string>& valid,
                     std::string_view what);

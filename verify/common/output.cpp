@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "command.h"
 #include "plot_scripts.h"
 
 namespace disklab::cli {
@@ -60,6 +61,16 @@ void AtomicFile::commit() {
   if (out_.fail()) throw std::runtime_error("write failed: " + temp_.string());
   fs::rename(temp_, target_);
   committed_ = true;
+}
+
+void check_out_file(const std::string& out) {
+  const fs::path p(out);
+  if (fs::is_directory(p)) throw UsageError("--out: '" + out + "' is a folder, not a file");
+  const fs::path dir = p.has_parent_path() ? p.parent_path() : fs::path(".");
+  if (!fs::is_directory(dir))
+    throw UsageError("--out: folder '" + dir.string() + "' does not exist");
+  if (::access(dir.c_str(), W_OK) != 0)
+    throw UsageError("--out: folder '" + dir.string() + "' is not writable");
 }
 
 void write_file_atomic(const fs::path& target, const std::string& content) {

@@ -31,6 +31,10 @@ class AtomicFile {
   bool committed_ = false;
 };
 
+// --out naming a file: it must not be a folder and its folder must exist and be writable.
+// Checked before any work so a bad path fails fast (UsageError, exit 2).
+void check_out_file(const std::string& out);
+
 // Writes `content` to `target` atomically.
 void write_file_atomic(const std::filesystem::path& target, const std::string& content);
 
