@@ -1,0 +1,235 @@
+#include "study/convergence.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <atomic>
+#include <bit>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <mutex>
+#include <stdexcept>
+
+#include "disklab/sequence/sequence.h"
+#include "study/estimator.h"
+
+namespace disklab::study {
+
+Scene memo_scene() {
+  Scene s;
+  s.light.center = Vec3(0.0, 0.0, 2.0);
+  s.light.normal = Vec3(0.0, 0.0, -1.0);
+  s.light.radius = 1.0;
+  s.light.two_sided = false;
+  s.light.radiance = 1.0;
+  s.light.axis_x = Vec3::UnitX();
+  s.light.axis_y = Vec3::UnitY();
+  s.occluders.push_back({Vec3(1.5, 0.0, 1.0), 0.5});
+  return s;
+}
+
+std::vector<StudyRegion> memo_regions() {
+  return {{{"lit-axis", -0.6, -0.3, -0.6, -0.3, 4, 4}, true},
+          {{"lit-off", -1.6, -1.3, -1.6, -1.3, 4, 4}, true},
+          {{"penumbra", 1.9, 2.2, 0.5, 0.8, 4, 4}, false}};
+}
+
+void finalize(ConvergenceConfig& c) {
+  if (c.strategies.empty())
+    c.strategies.assign(std::begin(disk::kAllStrategies), std::end(disk::kAllStrategies));
+  const std::vector<std::string> all = sequence::sequence_names();
+  if (c.sequences.empty()) c.sequences = all;
+  for (const std::string& name : c.sequences)
+    if (std::find(all.begin(), all.end(), name) == all.end())
+      throw std::invalid_argument("unknown sequence '" + name + "'");
+  if (c.ns.empty())
+    for (uint32_t n = 16; n <= 4096; n *= 2)
+      c.ns.push_back(n);
+  for (std::size_t k = 0; k < c.ns.size(); ++k) {
+    // Multiples of 4 keep the four-copy strategies' groups whole.
+    if (!std::has_single_bit(c.ns[k]) || c.ns[k] < 4)
+      throw std::invalid_argument("N = " + std::to_string(c.ns[k]) + " is not a power of two >= 4");
+    if (k > 0 && c.ns[k] <= c.ns[k - 1])
+      throw std::invalid_argument("the sample counts must increase");
+  }
+  if (c.seeds == 0) throw std::invalid_argument("seeds must be at least 1");
+  if (c.regions.empty()) throw std::invalid_argument("no regions");
+  std::size_t in_fit = 0;
+  for (uint32_t n : c.ns)
+    in_fit += n >= c.fit_min;
+  if (in_fit < 2)
+    throw std::invalid_argument("fewer than two sample counts in the fit range N >= " +
+                                std::to_string(c.fit_min));
+}
+
+std::vector<RegionReferences> compute_references(const ConvergenceConfig& config) {
+  constexpr double kEps = std::numeric_limits<double>::epsilon();
+  std::vector<RegionReferences> out;
+  const DiskLight& light = config.scene.light;
+  for (const StudyRegion& region : config.regions) {
+    RegionReferences refs{region.grid.name, region.fully_lit ? "closed-form" : "quadrature", {}};
+    for (const ShadingPoint& p : region.grid.points()) {
+      ReferenceValue v;
+      if (region.fully_lit) {
+        // Receiver parallel to the disk: height along the normal, offset from the axis.
+        const Vec3 rel = p.position - light.center;
+        const double h = std::fabs(rel.dot(light.normal));
+        const double d = (rel - rel.dot(light.normal) * light.normal).norm();
+        v.value = disk_irradiance_parallel(light.radiance, light.radius, h, d);
+        // A dozen roundings and two square roots: 16 eps relative bounds them.
+        v.error_estimate = 16.0 * kEps * v.value;
+      } else {
+        v = irradiance_quadrature(config.scene, p);
+      }
+      refs.points.push_back({p, v});
+    }
+    out.push_back(std::move(refs));
+  }
+  return out;
+}
+
+std::optional<std::size_t> ConvergenceResult::find_curve(std::string_view region,
+                                                         std::string_view strategy,
+                                                         std::string_view sequence) const {
+  std::optional<std::size_t> r, st, q;
+  for (std::size_t i = 0; i < config.regions.size(); ++i)
+    if (config.regions[i].grid.name == region) r = i;
+  for (std::size_t i = 0; i < config.strategies.size(); ++i)
+    if (disk::strategy_name(config.strategies[i]) == strategy) st = i;
+  for (std::size_t i = 0; i < config.sequences.size(); ++i)
+    if (config.sequences[i] == sequence) q = i;
+  if (!r || !st || !q) return std::nullopt;
+  return curve_index(*r, *st, *q);
+}
+
+std::optional<std::size_t> ConvergenceResult::find_n(uint32_t n) const {
+  for (std::size_t k = 0; k < config.ns.size(); ++k)
+    if (config.ns[k] == n) return k;
+  return std::nullopt;
+}
+
+std::vector<std::size_t> ConvergenceResult::fit_indices() const {
+  std::vector<std::size_t> ks;
+  for (std::size_t k = 0; k < config.ns.size(); ++k)
+    if (config.ns[k] >= config.fit_min) ks.push_back(k);
+  return ks;
+}
+
+void ConvergenceResult::allocate() {
+  const std::size_t size = curves() * config.ns.size() * config.seeds;
+  sse.assign(size, 0.0);
+  rel_sse.assign(size, 0.0);
+}
+
+double ConvergenceResult::mean_square(const std::vector<double>& data, std::size_t curve,
+                                      std::size_t k, std::span<const uint32_t> weights) const {
+  const double* row = &data[(curve * config.ns.size() + k) * config.seeds];
+  double sum = 0.0, count = 0.0;
+  for (std::size_t s = 0; s < config.seeds; ++s) {
+    const double w = weights.empty() ? 1.0 : weights[s];
+    sum += w * row[s];
+    count += w;
+  }
+  const std::size_t region = curve / (config.strategies.size() * config.sequences.size());
+  return sum / (count * static_cast<double>(points_per_region(region)));
+}
+
+double ConvergenceResult::rmse(std::size_t curve, std::size_t k,
+                               std::span<const uint32_t> weights) const {
+  return std::sqrt(mean_square(sse, curve, k, weights));
+}
+
+double ConvergenceResult::rel_rmse(std::size_t curve, std::size_t k,
+                                   std::span<const uint32_t> weights) const {
+  return std::sqrt(mean_square(rel_sse, curve, k, weights));
+}
+
+std::optional<double> ConvergenceResult::slope(std::size_t curve,
+                                               std::span<const uint32_t> weights) const {
+  std::vector<double> x, y;
+  for (std::size_t k : fit_indices()) {
+    const double e = rmse(curve, k, weights);
+    if (!(e > 0.0)) return std::nullopt;  // an exact estimate has no slope
+    x.push_back(config.ns[k]);
+    y.push_back(e);
+  }
+  if (x.size() < 2) return std::nullopt;
+  return fit_log_log(x, y).slope;
+}
+
+ConvergenceResult run_convergence(ConvergenceConfig config) {
+  finalize(config);
+  ConvergenceResult result;
+  result.config = config;
+  result.references = compute_references(config);
+  result.allocate();
+
+  const uint32_t n_max = config.ns.back();
+  uint32_t capacity = 0;
+  for (disk::Strategy st : config.strategies)
+    capacity = std::max(capacity, square_points_needed(st, n_max));
+
+  const std::size_t nseq = config.sequences.size(), nk = config.ns.size();
+  const auto jobs = static_cast<int64_t>(nseq * config.seeds);
+  std::atomic<uint64_t> done{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex;
+  const int threads = config.threads > 0 ? config.threads : omp_get_max_threads();
+
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (int64_t job = 0; job < jobs; ++job) {
+    try {
+      const std::size_t q = static_cast<std::size_t>(job) / config.seeds;
+      const std::size_t s = static_cast<std::size_t>(job) % config.seeds;
+      const auto seq =
+          sequence::make_sequence(config.sequences[q], config.first_seed + s, capacity);
+      std::vector<double> est(nk);
+      for (std::size_t st = 0; st < config.strategies.size(); ++st) {
+        const std::vector<AreaSample> samples = disk_samples(config.strategies[st], *seq, n_max);
+        for (std::size_t r = 0; r < config.regions.size(); ++r) {
+          const std::size_t curve = result.curve_index(r, st, q);
+          for (const PointReference& p : result.references[r].points) {
+            progressive_irradiance(config.scene, p.point, samples, config.ns, est);
+            const double ref = p.reference.value;
+            for (std::size_t k = 0; k < nk; ++k) {
+              const double e = est[k] - ref;
+              result.sse_at(curve, k, s) += e * e;
+              result.rel_sse_at(curve, k, s) += ref != 0.0 ? (e / ref) * (e / ref) : 0.0;
+            }
+          }
+        }
+      }
+    } catch (...) {
+      std::lock_guard lock(failure_mutex);
+      if (!failure) failure = std::current_exception();
+    }
+    const uint64_t now = ++done;
+    if (config.progress) config.progress(now, static_cast<uint64_t>(jobs));
+  }
+  if (failure) std::rethrow_exception(failure);
+  return result;
+}
+
+SeedBootstrap make_bootstrap(const ConvergenceConfig& config) {
+  // The resampling draws depend on the run's first seed only, so a run is reproducible.
+  return SeedBootstrap(config.seeds, config.bootstrap_replicates,
+                       0x9e3779b97f4a7c15ULL ^ config.first_seed);
+}
+
+std::vector<CurveFit> fit_all(const ConvergenceResult& result, const SeedBootstrap& bootstrap) {
+  std::vector<CurveFit> fits(result.curves());
+  const auto n = static_cast<int64_t>(fits.size());
+#pragma omp parallel for schedule(dynamic, 4) \
+    num_threads(result.config.threads > 0 ? result.config.threads : omp_get_max_threads())
+  for (int64_t c = 0; c < n; ++c) {
+    const auto curve = static_cast<std::size_t>(c);
+    fits[curve].curve = curve;
+    fits[curve].slope = result.slope(curve);
+    fits[curve].slope_se = bootstrap.standard_error(
+        [&](std::span<const uint32_t> w) { return result.slope(curve, w); });
+  }
+  return fits;
+}
+
+}  // namespace disklab::study
