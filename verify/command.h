@@ -26,6 +26,9 @@ struct UsageError : std::runtime_error {
 struct ReportOptions {
   std::filesystem::path dir;  // where the report writes (already created)
   bool quick = false;         // smaller runs (CI, smoke tests)
+  // Markdown a part adds to the index's claims section (paper claim, measured value, verdict);
+  // null when the caller keeps no index.
+  std::string* claims = nullptr;
 };
 
 struct Command {

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Contract of `disklab report --quick` (verify/report.cpp): every registered part runs and says
-# "ok" in index.md, every file the index names exists and is non-empty, PNGs are PNGs (when
-# /usr/bin/python3 has matplotlib), a second run into the same folder works, and a folder that
-# cannot be created is a usage error (exit 2, one line).
+# "ok" in index.md, the papers' claims table comes first, every file the index names exists and
+# is non-empty, PNGs are PNGs (when /usr/bin/python3 has matplotlib), a second run into the
+# same folder works, and a folder that cannot be created is a usage error (exit 2, one line).
 # Usage: bash report_contract.sh <path-to-disklab>
 set -u
 DISKLAB=${1:?usage: report_contract.sh <path-to-disklab>}
@@ -16,9 +16,16 @@ for round in 1 2; do
 done
 INDEX=$TMP/r/index.md
 [[ -s $INDEX ]] || fail "index.md missing"
-for part in accuracy points sequences; do
+for part in accuracy convergence points sequences; do
   grep -q "^## \`$part\`: ok" "$INDEX" || fail "part $part not reported ok in index.md"
 done
+# The papers' claims come first, with verdicts.
+grep -q "^## Claims of the papers, measured here" "$INDEX" || fail "index.md has no claims section"
+grep -q "| reproduced |" "$INDEX" || fail "index.md's claims table has no verdicts"
+claims_line=$(grep -n "^## Claims of the papers" "$INDEX" | cut -d: -f1)
+first_part=$(grep -n '^## `' "$INDEX" | head -1 | cut -d: -f1)
+[[ -n $claims_line && -n $first_part && $claims_line -lt $first_part ]] ||
+  fail "the claims section is not before the parts"
 if grep -q "FAILED" "$INDEX"; then fail "index.md reports a failed part"; fi
 # Every linked or embedded file exists and is non-empty.
 names=$(grep -o '](\([^)]*\))' "$INDEX" | sed 's/^](\(.*\))$/\1/' | sort -u)
