@@ -125,43 +125,35 @@ TEST(Fit, BootstrapErrorMatchesTheSpreadOfIndependentStudies) {
 }
 
 TEST(Verdicts, RulesOnMadeUpValues) {
-  const Rule slope{RuleKind::slope, -1.0};
-  EXPECT_EQ(judge(slope, -1.0), Verdict::reproduced);
-  EXPECT_EQ(judge(slope, -0.91), Verdict::reproduced);
-  EXPECT_EQ(judge(slope, -1.15), Verdict::roughly);
-  EXPECT_EQ(judge(slope, -0.81), Verdict::roughly);
-  EXPECT_EQ(judge(slope, -1.3), Verdict::differs);
-  EXPECT_EQ(judge(slope, std::nullopt), Verdict::not_measured);
-
-  const Rule factor{RuleKind::factor, 3.5};
-  EXPECT_EQ(judge(factor, 3.0), Verdict::reproduced);  // x0.86
-  EXPECT_EQ(judge(factor, 4.3), Verdict::reproduced);  // x1.23
-  EXPECT_EQ(judge(factor, 2.5), Verdict::roughly);     // x0.71
-  EXPECT_EQ(judge(factor, 1.8), Verdict::differs);     // x0.51
-  EXPECT_EQ(judge(factor, -1.0), Verdict::differs);
-
-  const Rule same{RuleKind::about_equal, 1.0};
-  EXPECT_EQ(judge(same, 1.05), Verdict::reproduced);
-  EXPECT_EQ(judge(same, 0.8), Verdict::roughly);
-  EXPECT_EQ(judge(same, 1.66), Verdict::differs);
-
-  const Rule lower{RuleKind::lower, 0.8};
-  EXPECT_EQ(judge(lower, 0.5), Verdict::reproduced);
-  EXPECT_EQ(judge(lower, 0.85), Verdict::roughly);
-  EXPECT_EQ(judge(lower, 0.97), Verdict::differs);
-  const Rule higher{RuleKind::higher, 1.25};
-  EXPECT_EQ(judge(higher, 2.0), Verdict::reproduced);
-  EXPECT_EQ(judge(higher, 1.2), Verdict::roughly);
-  EXPECT_EQ(judge(higher, 1.08), Verdict::differs);
-
-  const Rule cross{RuleKind::crossover, 2048};
-  EXPECT_EQ(judge(cross, 1500.0), Verdict::reproduced);
-  EXPECT_EQ(judge(cross, 700.0), Verdict::roughly);
-  EXPECT_EQ(judge(cross, 100.0), Verdict::differs);
-  EXPECT_EQ(judge(cross, 0.0), Verdict::differs);  // already below at the first N
+  struct Row {
+    Rule rule;
+    double measured, max_n;
+    Verdict expected;
+  };
   const double never = std::numeric_limits<double>::infinity();
-  EXPECT_EQ(judge(cross, never, 4096), Verdict::differs);       // the claimed window passed
-  EXPECT_EQ(judge(cross, never, 1024), Verdict::not_measured);  // the run stopped too early
+  const Rule slope{RuleKind::slope, -1.0}, factor{RuleKind::factor, 3.5};
+  const Rule same{RuleKind::about_equal, 1.0}, lower{RuleKind::lower, 0.8};
+  const Rule higher{RuleKind::higher, 1.25}, cross{RuleKind::crossover, 2048};
+  const Row rows[] = {
+      {slope, -1.0, 0, Verdict::reproduced},       {slope, -0.91, 0, Verdict::reproduced},
+      {slope, -1.15, 0, Verdict::roughly},         {slope, -0.81, 0, Verdict::roughly},
+      {slope, -1.3, 0, Verdict::differs},          {factor, 3.0, 0, Verdict::reproduced},  // x0.86
+      {factor, 4.3, 0, Verdict::reproduced},       {factor, 2.5, 0, Verdict::roughly},     // x0.71
+      {factor, 1.8, 0, Verdict::differs},          {factor, -1.0, 0, Verdict::differs},
+      {same, 1.05, 0, Verdict::reproduced},        {same, 0.8, 0, Verdict::roughly},
+      {same, 1.66, 0, Verdict::differs},           {lower, 0.5, 0, Verdict::reproduced},
+      {lower, 0.85, 0, Verdict::roughly},          {lower, 0.97, 0, Verdict::differs},
+      {higher, 2.0, 0, Verdict::reproduced},       {higher, 1.2, 0, Verdict::roughly},
+      {higher, 1.08, 0, Verdict::differs},         {cross, 1500.0, 0, Verdict::reproduced},
+      {cross, 700.0, 0, Verdict::roughly},         {cross, 100.0, 0, Verdict::differs},
+      {cross, 0.0, 0, Verdict::differs},            // already below at the first N
+      {cross, never, 4096, Verdict::differs},       // the claimed window passed
+      {cross, never, 1024, Verdict::not_measured},  // the run stopped too early
+  };
+  for (const Row& r : rows)
+    EXPECT_EQ(judge(r.rule, r.measured, r.max_n), r.expected)
+        << rule_text(r.rule) << ", measured " << r.measured << ", max N " << r.max_n;
+  EXPECT_EQ(judge(slope, std::nullopt), Verdict::not_measured);
 }
 
 TEST(Claims, SlopeClaimsOnASyntheticStudy) {

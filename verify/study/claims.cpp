@@ -97,6 +97,42 @@ Opt log_rmse(const ConvergenceResult& r, std::size_t c, std::size_t k, Weights w
   if (!(e > 0.0)) return std::nullopt;
   return std::log(e);
 }
+// exp of the mean of log_ratio(k) over the fit range: a geometric mean of RMS ratios. nullopt
+// if any term is undefined.
+template <class F>
+Opt fit_range_geomean(const ConvergenceResult& r, F&& log_ratio) {
+  double sum = 0.0;
+  int count = 0;
+  for (std::size_t k : r.fit_indices()) {
+    const Opt l = log_ratio(k);
+    if (!l) return std::nullopt;
+    sum += *l;
+    ++count;
+  }
+  if (count == 0) return std::nullopt;
+  return std::exp(sum / count);
+}
+// The lowest log rmse at ns[k] over the curves of these strategies and sequences in the run.
+Opt min_log_rmse(const ConvergenceResult& r, std::size_t region,
+                 const std::vector<std::string>& strategies,
+                 const std::vector<std::string>& sequences, std::size_t k, Weights w) {
+  Opt best;
+  for (const std::string& st : strategies)
+    for (const std::string& q : sequences) {
+      const auto c = curve(r, region, st, q);
+      if (!c) continue;
+      const Opt l = log_rmse(r, *c, k, w);
+      if (l && (!best || *l < *best)) best = l;
+    }
+  return best;
+}
+// log rmse(a) - log rmse(b) at ns[k].
+Opt log_ratio_at(const ConvergenceResult& r, std::size_t a, std::size_t b, std::size_t k,
+                 Weights w) {
+  const Opt la = log_rmse(r, a, k, w), lb = log_rmse(r, b, k, w);
+  if (!la || !lb) return std::nullopt;
+  return *la - *lb;
+}
 }  // namespace
 
 namespace measures {
@@ -152,16 +188,7 @@ Measure mean_ratio(std::string strategy_a, std::string sequence_a, std::string s
     const auto a = curve(r, region, strategy_a, sequence_a);
     const auto b = curve(r, region, strategy_b, sequence_b);
     if (!a || !b) return std::nullopt;
-    double sum = 0.0;
-    int count = 0;
-    for (std::size_t k : r.fit_indices()) {
-      const Opt la = log_rmse(r, *a, k, w), lb = log_rmse(r, *b, k, w);
-      if (!la || !lb) return std::nullopt;
-      sum += *la - *lb;
-      ++count;
-    }
-    if (count == 0) return std::nullopt;
-    return std::exp(sum / count);
+    return fit_range_geomean(r, [&](std::size_t k) { return log_ratio_at(r, *a, *b, k, w); });
   };
 }
 
@@ -228,23 +255,12 @@ Measure ratio_to_best_other(std::string strategy, std::string sequence,
   return [=](const ConvergenceResult& r, std::size_t region, Weights w) -> Opt {
     const auto a = curve(r, region, strategy, sequence);
     if (!a) return std::nullopt;
-    double sum = 0.0;
-    int count = 0;
-    for (std::size_t k : r.fit_indices()) {
-      Opt best;
-      for (const std::string& o : others) {
-        const auto c = curve(r, region, o, sequence);
-        if (!c) continue;
-        const Opt l = log_rmse(r, *c, k, w);
-        if (l && (!best || *l < *best)) best = l;
-      }
-      const Opt la = log_rmse(r, *a, k, w);
+    return fit_range_geomean(r, [&](std::size_t k) -> Opt {
+      const Opt la = log_rmse(r, *a, k, w),
+                best = min_log_rmse(r, region, others, {sequence}, k, w);
       if (!la || !best) return std::nullopt;
-      sum += *la - *best;
-      ++count;
-    }
-    if (count == 0) return std::nullopt;
-    return std::exp(sum / count);
+      return *la - *best;
+    });
   };
 }
 
@@ -252,27 +268,13 @@ Measure ratio_to_best_other(std::string strategy, std::string sequence,
 // same for the best of `strategies_b`: the best curve of one strategy against the best of others.
 Measure best_vs_best(std::string strategy_a, std::vector<std::string> strategies_b) {
   return [=](const ConvergenceResult& r, std::size_t region, Weights w) -> Opt {
-    double sum = 0.0;
-    int count = 0;
-    auto best_of = [&](const std::vector<std::string>& sts, std::size_t k) -> Opt {
-      Opt best;
-      for (const std::string& st : sts)
-        for (const std::string& q : r.config.sequences) {
-          const auto c = curve(r, region, st, q);
-          if (!c) continue;
-          const Opt l = log_rmse(r, *c, k, w);
-          if (l && (!best || *l < *best)) best = l;
-        }
-      return best;
-    };
-    for (std::size_t k : r.fit_indices()) {
-      const Opt la = best_of({strategy_a}, k), lb = best_of(strategies_b, k);
+    const auto& qs = r.config.sequences;
+    return fit_range_geomean(r, [&](std::size_t k) -> Opt {
+      const Opt la = min_log_rmse(r, region, {strategy_a}, qs, k, w);
+      const Opt lb = min_log_rmse(r, region, strategies_b, qs, k, w);
       if (!la || !lb) return std::nullopt;
-      sum += *la - *lb;
-      ++count;
-    }
-    if (count == 0) return std::nullopt;
-    return std::exp(sum / count);
+      return *la - *lb;
+    });
   };
 }
 
@@ -282,9 +284,7 @@ Measure ratio_to_median(std::string strategy, std::string sequence,
   return [=](const ConvergenceResult& r, std::size_t region, Weights w) -> Opt {
     const auto a = curve(r, region, strategy, sequence);
     if (!a) return std::nullopt;
-    double sum = 0.0;
-    int count = 0;
-    for (std::size_t k : r.fit_indices()) {
+    return fit_range_geomean(r, [&](std::size_t k) -> Opt {
       std::vector<double> logs;
       for (const std::string& o : others) {
         const auto c = curve(r, region, strategy, o);
@@ -295,12 +295,8 @@ Measure ratio_to_median(std::string strategy, std::string sequence,
       if (!la || logs.empty()) return std::nullopt;
       std::sort(logs.begin(), logs.end());
       const std::size_t m = logs.size();
-      const double median = m % 2 ? logs[m / 2] : 0.5 * (logs[m / 2 - 1] + logs[m / 2]);
-      sum += *la - median;
-      ++count;
-    }
-    if (count == 0) return std::nullopt;
-    return std::exp(sum / count);
+      return *la - (m % 2 ? logs[m / 2] : 0.5 * (logs[m / 2 - 1] + logs[m / 2]));
+    });
   };
 }
 
