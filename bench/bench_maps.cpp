@@ -108,7 +108,9 @@ const std::vector<Point2>& points() {
 
 template <class M>
 struct Plain {  // maps with sample(Point2) -> EllipseSample
-  static M make(const Config& c) { return M::make(c.center, c.normal, c.radius, c.o); }
+  static M make(const Config& c) {
+    return M::make(ell::Disk{c.center, c.normal, c.radius, false}, c.o);
+  }
   static int draw(const M& m, const Point2* u, int n, double& sink) {
     for (int i = 0; i < n; ++i) {
       const ell::EllipseSample s = m.sample(u[i]);
@@ -120,7 +122,7 @@ struct Plain {  // maps with sample(Point2) -> EllipseSample
 
 struct Radial4Adapter {
   static ell::Radial4Map make(const Config& c) {
-    return ell::Radial4Map::make(c.center, c.normal, c.radius, c.o);
+    return ell::Radial4Map::make(ell::Disk{c.center, c.normal, c.radius, false}, c.o);
   }
   // n / 4 root solves, four directions each: n samples, the same count as the other maps.
   static int draw(const ell::Radial4Map& m, const Point2* u, int n, double& sink) {
@@ -135,7 +137,7 @@ struct Radial4Adapter {
 
 struct GamitoAdapter {
   static ell::GamitoSampler make(const Config& c) {
-    return ell::GamitoSampler::make(c.center, c.normal, c.radius, c.o);
+    return ell::GamitoSampler::make(ell::Disk{c.center, c.normal, c.radius, false}, c.o);
   }
   static int draw(const ell::GamitoSampler& m, const Point2* u, int n, double& sink) {
     static thread_local disklab::sequence::Pcg32 rng(7);

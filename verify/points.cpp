@@ -148,14 +148,14 @@ uint32_t write_ellipse_csv(const PointsState& s, const ellipse::AnyMap& m,
                            bool plot_columns = false) {
   std::string buf = plot_columns ? "index,u,v,x,y,z,pdf,dx,dy,lx,ly\n" : "index,u,v,x,y,z,pdf\n";
   const ellipse::MapGeometry& g = m.geometry();
-  const Vec3 e1 = g.xe, e2 = g.n.cross(g.xe);
+  const Vec3 e1 = g.frame.x, e2 = g.normal.cross(g.frame.x);
   const uint32_t used = for_each_ellipse_row(s, m, seq, [&](const EllipseRow& r) {
     const ellipse::EllipseSample& e = *r.s;
     buf += std::to_string(r.index) + "," + fmt17(r.uv.x) + "," + fmt17(r.uv.y) + "," +
            fmt17(e.direction.x()) + "," + fmt17(e.direction.y()) + "," + fmt17(e.direction.z()) +
            "," + fmt17(e.pdf);
     if (plot_columns) {
-      const Vec3 off = e.point - g.c;
+      const Vec3 off = e.point - g.center;
       buf += "," + fmt17(off.dot(e1) / g.radius) + "," + fmt17(off.dot(e2) / g.radius) + "," +
              fmt17(e.local.x() / g.a) + "," + fmt17(e.local.y() / g.a);
     }

@@ -58,21 +58,21 @@ ellipse::EllipseSample direct_sample(MapKind kind, const DiskConfig& c, Point2 u
   const auto& [center, normal, r, o] = std::tie(c.center, c.normal, c.radius, c.point);
   switch (kind) {
     case MapKind::area:
-      return ellipse::AreaSampler::make(center, normal, r, o).sample(u);
+      return ellipse::AreaSampler::make(ellipse::Disk{center, normal, r, false}, o).sample(u);
     case MapKind::gamito:
-      return ellipse::GamitoSampler::make(center, normal, r, o).propose(u);
+      return ellipse::GamitoSampler::make(ellipse::Disk{center, normal, r, false}, o).propose(u);
     case MapKind::parallel:
-      return ellipse::ParallelMap::make(center, normal, r, o).sample(u);
+      return ellipse::ParallelMap::make(ellipse::Disk{center, normal, r, false}, o).sample(u);
     case MapKind::radial:
-      return ellipse::RadialMap::make(center, normal, r, o).sample(u);
+      return ellipse::RadialMap::make(ellipse::Disk{center, normal, r, false}, o).sample(u);
     case MapKind::ld_radial:
-      return ellipse::LdRadialMap::make(center, normal, r, o).sample(u);
+      return ellipse::LdRadialMap::make(ellipse::Disk{center, normal, r, false}, o).sample(u);
     case MapKind::radial4:
-      return ellipse::Radial4Map::make(center, normal, r, o).sample4(u)[k];
+      return ellipse::Radial4Map::make(ellipse::Disk{center, normal, r, false}, o).sample4(u)[k];
     case MapKind::tabulated:
-      return ellipse::TabulatedMap::make(center, normal, r, o).sample(u);
+      return ellipse::TabulatedMap::make(ellipse::Disk{center, normal, r, false}, o).sample(u);
     case MapKind::radial_fast:
-      return ellipse::RadialFastMap::make(center, normal, r, o).sample(u);
+      return ellipse::RadialFastMap::make(ellipse::Disk{center, normal, r, false}, o).sample(u);
   }
   return {};
 }
@@ -81,21 +81,21 @@ std::optional<Point2> direct_invert(MapKind kind, const DiskConfig& c, const Vec
   const auto& [center, normal, r, o] = std::tie(c.center, c.normal, c.radius, c.point);
   switch (kind) {
     case MapKind::area:
-      return ellipse::AreaSampler::make(center, normal, r, o).invert(d);
+      return ellipse::AreaSampler::make(ellipse::Disk{center, normal, r, false}, o).invert(d);
     case MapKind::gamito:
       return std::nullopt;
     case MapKind::parallel:
-      return ellipse::ParallelMap::make(center, normal, r, o).invert(d);
+      return ellipse::ParallelMap::make(ellipse::Disk{center, normal, r, false}, o).invert(d);
     case MapKind::radial:
-      return ellipse::RadialMap::make(center, normal, r, o).invert(d);
+      return ellipse::RadialMap::make(ellipse::Disk{center, normal, r, false}, o).invert(d);
     case MapKind::ld_radial:
-      return ellipse::LdRadialMap::make(center, normal, r, o).invert(d);
+      return ellipse::LdRadialMap::make(ellipse::Disk{center, normal, r, false}, o).invert(d);
     case MapKind::radial4:
-      return ellipse::Radial4Map::make(center, normal, r, o).invert(d);
+      return ellipse::Radial4Map::make(ellipse::Disk{center, normal, r, false}, o).invert(d);
     case MapKind::tabulated:
-      return ellipse::TabulatedMap::make(center, normal, r, o).invert(d);
+      return ellipse::TabulatedMap::make(ellipse::Disk{center, normal, r, false}, o).invert(d);
     case MapKind::radial_fast:
-      return ellipse::RadialFastMap::make(center, normal, r, o).invert(d);
+      return ellipse::RadialFastMap::make(ellipse::Disk{center, normal, r, false}, o).invert(d);
   }
   return std::nullopt;
 }
@@ -108,7 +108,8 @@ TEST(AnyMap, NamesAreCompleteUniqueAndRoundTrip) {
     ASSERT_TRUE(kind.has_value()) << name;
     EXPECT_EQ(ellipse::map_name(*kind), name);
     kinds.insert(*kind);
-    const auto m = ellipse::AnyMap::make(name, Vec3(0, 0, 1), Vec3(0, 0, -1), 1.0, Vec3::Zero());
+    const auto m = ellipse::AnyMap::make(
+        name, ellipse::Disk{Vec3(0, 0, 1), Vec3(0, 0, -1), 1.0, false}, Vec3::Zero());
     EXPECT_EQ(m.kind(), *kind);
     EXPECT_EQ(m.name(), name);
   }
@@ -119,7 +120,8 @@ TEST(AnyMap, UnknownNamesThrowInvalidArgument) {
   for (const std::string bad : {"", "Radial", "radial ", "ld_radial", "polar", "radial5"}) {
     EXPECT_FALSE(ellipse::parse_map(bad).has_value()) << "'" << bad << "'";
     try {
-      (void)ellipse::AnyMap::make(bad, Vec3(0, 0, 1), Vec3(0, 0, -1), 1.0, Vec3::Zero());
+      (void)ellipse::AnyMap::make(bad, ellipse::Disk{Vec3(0, 0, 1), Vec3(0, 0, -1), 1.0, false},
+                                  Vec3::Zero());
       ADD_FAILURE() << "make('" << bad << "') did not throw";
     } catch (const std::invalid_argument& e) {
       EXPECT_NE(std::string(e.what()).find("'" + bad + "'"), std::string::npos) << e.what();
@@ -145,7 +147,7 @@ RC_GTEST_PROP(AnyMap, DispatchAgreesWithStructs, ()) {
   const std::string name = *rc::gen::elementOf(kExpectedNames);
   const Point2 u{*rc::gen::inRange(0, 1 << 30) / double(1 << 30),
                  *rc::gen::inRange(0, (1 << 30) + 1) / double(1 << 30)};
-  const auto m = ellipse::AnyMap::make(name, c.center, c.normal, c.radius, c.point);
+  const auto m = ellipse::AnyMap::make(name, c.disk(), c.point);
   RC_ASSERT(m.valid());
   std::array<ellipse::EllipseSample, 4> out;
   const int n = m.sample_copies(u, out);
@@ -174,7 +176,7 @@ RC_GTEST_PROP(AnyMap, SamplesAreContainedAndInvertible, ()) {
   const double v =
       *rc::gen::inRange(0, 3) == 0 ? 1.0 : *rc::gen::inRange(0, 1 << 30) / double(1 << 30);
   const Point2 u{*rc::gen::inRange(1, 1 << 30) / double(1 << 30), v};
-  const auto m = ellipse::AnyMap::make(name, c.center, c.normal, c.radius, c.point);
+  const auto m = ellipse::AnyMap::make(name, c.disk(), c.point);
   std::array<ellipse::EllipseSample, 4> out;
   const int n = m.sample_copies(u, out);
   for (int k = 0; k < n; ++k) {
@@ -213,7 +215,7 @@ RC_GTEST_PROP(AnyMap, DirectionsOffTheDiskAreRejected, ()) {
   const DiskConfig& c = *rc::gen::elementOf(configs);
   const std::string name = *rc::gen::elementOf(kExpectedNames);
   const double t = *rc::gen::inRange(0, 1 << 20) / double(1 << 20) * 2 * math::kPi;
-  const auto m = ellipse::AnyMap::make(name, c.center, c.normal, c.radius, c.point);
+  const auto m = ellipse::AnyMap::make(name, c.disk(), c.point);
   const ellipse::MapGeometry& g = m.geometry();
   // A rim point of the tangent ellipse (a_t cos t, b_t sin t, 1), pushed outwards.
   const Vec3 rim_out(g.a_t * std::cos(t) * (1 + kOutsidePush),
@@ -255,7 +257,7 @@ TEST(AnyMap, DegenerateGeometryHasDefinedAnswers) {
   };
   for (const auto& sc : scenes) {
     for (const auto& name : kExpectedNames) {
-      const auto m = ellipse::AnyMap::make(name, sc.c, sc.n, sc.r, sc.o);
+      const auto m = ellipse::AnyMap::make(name, ellipse::Disk{sc.c, sc.n, sc.r, false}, sc.o);
       SCOPED_TRACE(name + " " + sc.what);
       EXPECT_FALSE(m.valid());
       EXPECT_EQ(m.omega(), 0.0);

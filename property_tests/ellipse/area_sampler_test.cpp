@@ -24,7 +24,8 @@ TEST(AreaSampler, RimLiesOnTheEllipseAtEveryDistance) {
   const Vec3 normal = Vec3(0.3, -0.2, -1.0).normalized();
   for (const double d : {1.0, 1e2, 1e4, 1e6, 1e8}) {
     const Vec3 center(0.3 * d, 0.2 * d, d);
-    const auto area = ellipse::AreaSampler::make(center, normal, 1.0, Vec3::Zero());
+    const auto area =
+        ellipse::AreaSampler::make(ellipse::Disk{center, normal, 1.0, false}, Vec3::Zero());
     ASSERT_TRUE(area.valid()) << d;
     double worst = 0.0;
     for (int i = 0; i < 4096; ++i) {
@@ -50,7 +51,8 @@ TEST(AreaSampler, ClosedFormCentreMatchesProjectionNearby) {
   const Vec3 normal = Vec3(0.3, -0.2, -1.0).normalized();
   for (const double d : {0.5, 1.0, 3.0, 10.0}) {
     const Vec3 center(0.3 * d, 0.2 * d, d);
-    const auto area = ellipse::AreaSampler::make(center, normal, 1.0, Vec3::Zero());
+    const auto area =
+        ellipse::AreaSampler::make(ellipse::Disk{center, normal, 1.0, false}, Vec3::Zero());
     const Vec3 projected = area.g.to_local(center);
     // Projection error ~eps |c - o| per component; 16 eps |c - o| covers the frame's rounding.
     const double tol = 16 * std::numeric_limits<double>::epsilon() * center.norm();

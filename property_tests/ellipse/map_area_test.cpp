@@ -93,7 +93,7 @@ INSTANTIATE_TEST_SUITE_P(All, MapAreaPreservation, ::testing::ValuesIn(bijective
 // squared (a density that grows towards the rim).
 TEST(MapAreaPreservationControl, DetectsNonUniformVariant) {
   const DiskConfig c = map_configs()[3];
-  const auto radial = ellipse::RadialMap::make(c.center, c.normal, c.radius, c.point);
+  const auto radial = ellipse::RadialMap::make(c.disk(), c.point);
   const AreaCheck r = check_strata(
       [&](Point2 u) {
         return radial.sample({u.x, u.y * u.y});
@@ -105,8 +105,8 @@ TEST(MapAreaPreservationControl, DetectsNonUniformVariant) {
 // Omega of the maps vs the disk's rim traced as a spherical polygon (independent of eq. 19).
 TEST(MapSolidAngle, OmegaMatchesRimPolygon) {
   for (const DiskConfig& c : map_configs()) {
-    const auto g = ellipse::MapGeometry::make(c.center, c.normal, c.radius, c.point);
-    const Vec3 e1 = g.xe, e2 = g.n.cross(e1);
+    const auto g = ellipse::MapGeometry::make(c.disk(), c.point);
+    const Vec3 e1 = g.frame.x, e2 = g.normal.cross(e1);
     const Vec3 cl = g.to_local(c.center - c.point);
     auto rim = [&](double t) {
       const double th = math::kTwoPi * t;

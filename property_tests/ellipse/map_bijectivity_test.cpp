@@ -139,7 +139,7 @@ RC_GTEST_PROP(MapBijectivityRandom, MapOfInverseIsIdentity, ()) {
   const DiskConfig& c = configs[ci];
   const Point2 v{uniform01(*rc::gen::arbitrary<uint64_t>()),
                  uniform01(*rc::gen::arbitrary<uint64_t>())};
-  const auto area = ellipse::AreaSampler::make(c.center, c.normal, c.radius, c.point);
+  const auto area = ellipse::AreaSampler::make(c.disk(), c.point);
   const ellipse::EllipseSample w = area.sample(v);
   RC_ASSERT(w.valid);
   Vec3 l = w.local;
@@ -183,14 +183,9 @@ TEST(MapDegenerate, NoSampleAndNoNaN) {
       EXPECT_FALSE(s.valid) << name << " " << c.describe();
       EXPECT_FALSE(std::isnan(s.pdf)) << name << " " << c.describe();
     }
-    EXPECT_FALSE(
-        ellipse::AreaSampler::make(c.center, c.normal, c.radius, c.point).sample({0.3, 0.7}).valid);
-    EXPECT_FALSE(ellipse::GamitoSampler::make(c.center, c.normal, c.radius, c.point)
-                     .propose({0.3, 0.7})
-                     .valid);
-    EXPECT_FALSE(ellipse::TabulatedMap::make(c.center, c.normal, c.radius, c.point)
-                     .sample({0.3, 0.7})
-                     .valid);
+    EXPECT_FALSE(ellipse::AreaSampler::make(c.disk(), c.point).sample({0.3, 0.7}).valid);
+    EXPECT_FALSE(ellipse::GamitoSampler::make(c.disk(), c.point).propose({0.3, 0.7}).valid);
+    EXPECT_FALSE(ellipse::TabulatedMap::make(c.disk(), c.point).sample({0.3, 0.7}).valid);
   }
 }
 

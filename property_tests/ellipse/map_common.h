@@ -25,11 +25,13 @@ struct DiskConfig {
   Vec3 center, normal;
   double radius;
   Vec3 point;
+  bool two_sided = false;
+  ellipse::Disk disk() const { return {center, normal, radius, two_sided}; }
   std::string describe() const {
     std::ostringstream s;
     s.precision(17);
     s << name << " {c=(" << center.transpose() << ") n=(" << normal.transpose() << ") r=" << radius
-      << " o=(" << point.transpose() << ")}";
+      << " o=(" << point.transpose() << ")" << (two_sided ? " two-sided" : "") << "}";
     return s.str();
   }
 };
@@ -88,33 +90,29 @@ inline AnyMap make_map(const std::string& name, const DiskConfig& c) {
   AnyMap m;
   m.name = name;
   if (name == "radial") {
-    auto p = std::make_shared<ellipse::RadialMap>(
-        ellipse::RadialMap::make(c.center, c.normal, c.radius, c.point));
+    auto p = std::make_shared<ellipse::RadialMap>(ellipse::RadialMap::make(c.disk(), c.point));
     m.omega = m.measure = p->g.omega;
     m.sample = [p](Point2 u, int* it) { return p->sample(u, it); };
     m.invert_local = [p](const Vec3& l) { return p->invert_local(l); };
   } else if (name == "parallel") {
-    auto p = std::make_shared<ellipse::ParallelMap>(
-        ellipse::ParallelMap::make(c.center, c.normal, c.radius, c.point));
+    auto p = std::make_shared<ellipse::ParallelMap>(ellipse::ParallelMap::make(c.disk(), c.point));
     m.omega = m.measure = p->g.omega;
     m.sample = [p](Point2 u, int* it) { return p->sample(u, it); };
     m.invert_local = [p](const Vec3& l) { return p->invert_local(l); };
   } else if (name == "ld-radial") {
-    auto p = std::make_shared<ellipse::LdRadialMap>(
-        ellipse::LdRadialMap::make(c.center, c.normal, c.radius, c.point));
+    auto p = std::make_shared<ellipse::LdRadialMap>(ellipse::LdRadialMap::make(c.disk(), c.point));
     m.omega = m.measure = p->radial.g.omega;
     m.sample = [p](Point2 u, int* it) { return p->sample(u, it); };
     m.invert_local = [p](const Vec3& l) { return p->invert_local(l); };
   } else if (name == "radial4") {
-    auto p = std::make_shared<ellipse::Radial4Map>(
-        ellipse::Radial4Map::make(c.center, c.normal, c.radius, c.point));
+    auto p = std::make_shared<ellipse::Radial4Map>(ellipse::Radial4Map::make(c.disk(), c.point));
     m.omega = p->radial.g.omega;
     m.measure = 0.25 * m.omega;
     m.sample = [p](Point2 u, int* it) { return p->sample_quadrant(u, it); };
     m.invert_local = [p](const Vec3& l) { return p->invert_local(l); };
   } else if (name == "radial-fast") {
-    auto p = std::make_shared<ellipse::RadialFastMap>(
-        ellipse::RadialFastMap::make(c.center, c.normal, c.radius, c.point));
+    auto p =
+        std::make_shared<ellipse::RadialFastMap>(ellipse::RadialFastMap::make(c.disk(), c.point));
     m.omega = m.measure = p->radial.g.omega;
     m.sample = [p](Point2 u, int* it) { return p->sample(u, it); };
     m.invert_local = [p](const Vec3& l) { return p->invert_local(l); };

@@ -61,7 +61,7 @@ TEST(MapNewton, IterationCountsRecorded) {
 
 // eps1 error of a table: max over a fine eps grid of |Omega_r(phi_table(t))/Omega_q - t|.
 double table_error(const ellipse::RadialTable& table, const DiskConfig& c) {
-  const auto m = ellipse::TabulatedMap::make(c.center, c.normal, c.radius, c.point, table);
+  const auto m = ellipse::TabulatedMap::make(c.disk(), c.point, table);
   const int n = table.n_eps;
   double worst = 0.0;
   for (int i = 0; i <= 4096; ++i) {
@@ -95,7 +95,7 @@ TEST(MapTabulation, ErrorShrinksWithResolutionAtObservedOrder) {
   // The default table on the paper's configurations: error and rejection rate, reported.
   for (const auto& cfg : map_configs()) {
     const auto& table = ellipse::RadialTable::shared();
-    const auto m = ellipse::TabulatedMap::make(cfg.center, cfg.normal, cfg.radius, cfg.point);
+    const auto m = ellipse::TabulatedMap::make(cfg.disk(), cfg.point);
     sequence::Pcg32 rng(3);
     int rejected = 0;
     const int N = 20000;

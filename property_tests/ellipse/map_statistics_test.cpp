@@ -101,16 +101,15 @@ std::function<double(sequence::Pcg32&, const std::function<double(const Vec3&)>&
     return Point2{x, rng.next_double()};
   };
   if (name == "area") {
-    auto s = std::make_shared<ellipse::AreaSampler>(
-        ellipse::AreaSampler::make(c.center, c.normal, c.radius, c.point));
+    auto s = std::make_shared<ellipse::AreaSampler>(ellipse::AreaSampler::make(c.disk(), c.point));
     return [s, u01](sequence::Pcg32& rng, const Fn& f) {
       const auto x = s->sample(u01(rng));
       return x.valid ? f(x.direction) / x.pdf : 0.0;
     };
   }
   if (name == "gamito" || name == "gamito-proposal") {
-    auto s = std::make_shared<ellipse::GamitoSampler>(
-        ellipse::GamitoSampler::make(c.center, c.normal, c.radius, c.point));
+    auto s =
+        std::make_shared<ellipse::GamitoSampler>(ellipse::GamitoSampler::make(c.disk(), c.point));
     const bool loop = name == "gamito";
     return [s, u01, loop, biased](sequence::Pcg32& rng, const Fn& f) {
       if (loop) {
@@ -123,8 +122,8 @@ std::function<double(sequence::Pcg32&, const std::function<double(const Vec3&)>&
     };
   }
   if (name == "tabulated") {
-    auto s = std::make_shared<ellipse::TabulatedMap>(
-        ellipse::TabulatedMap::make(c.center, c.normal, c.radius, c.point));
+    auto s =
+        std::make_shared<ellipse::TabulatedMap>(ellipse::TabulatedMap::make(c.disk(), c.point));
     s->biased = biased;
     return [s, u01](sequence::Pcg32& rng, const Fn& f) {
       const auto x = s->sample(u01(rng));
@@ -132,8 +131,7 @@ std::function<double(sequence::Pcg32&, const std::function<double(const Vec3&)>&
     };
   }
   if (name == "radial4") {
-    auto s = std::make_shared<ellipse::Radial4Map>(
-        ellipse::Radial4Map::make(c.center, c.normal, c.radius, c.point));
+    auto s = std::make_shared<ellipse::Radial4Map>(ellipse::Radial4Map::make(c.disk(), c.point));
     return [s, u01](sequence::Pcg32& rng, const Fn& f) {
       const auto xs = s->sample4(u01(rng));
       double sum = 0.0;
@@ -160,7 +158,7 @@ struct MeanCheck {
 MeanCheck check_mean(const std::string& name, const DiskConfig& c, int integrand, bool biased,
                      double z, uint64_t seed) {
   const Vec3 phi = vector_solid_angle(c);
-  const double omega = ellipse::MapGeometry::make(c.center, c.normal, c.radius, c.point).omega;
+  const double omega = ellipse::MapGeometry::make(c.disk(), c.point).omega;
   // f0 = 1 (reference Omega); f1 = w . s with s at ~60 degrees from the disk's direction
   // (reference s . Phi).
   const Vec3 dir = (c.center - c.point).normalized();
@@ -198,7 +196,7 @@ MeanCheck check_mean(const std::string& name, const DiskConfig& c, int integrand
 TEST(MapStatisticsReference, VectorSolidAngleConsistent) {
   for (const DiskConfig& c : map_configs()) {
     const Vec3 phi = vector_solid_angle(c);
-    const double omega = ellipse::MapGeometry::make(c.center, c.normal, c.radius, c.point).omega;
+    const double omega = ellipse::MapGeometry::make(c.disk(), c.point).omega;
     // |Phi| <= Omega (|w| = 1), with near equality for small ellipses.
     EXPECT_LE(phi.norm(), omega * (1.0 + 1e-12)) << c.describe();
     EXPECT_GT(phi.norm(), 0.3 * omega) << c.describe();
@@ -235,7 +233,7 @@ TEST(MapUnbiased, BiasedEstimatorsAreDetected) {
     const MeanCheck r = check_mean("gamito-proposal", c, 1, true, z, ++seed);
     // The bias is the rejection rate 1 - Omega/S; seen from very near, the square's corners lie
     // at the horizon and the rate falls below what 1e5 samples resolve (reported, not asserted).
-    const auto gs = ellipse::GamitoSampler::make(c.center, c.normal, c.radius, c.point);
+    const auto gs = ellipse::GamitoSampler::make(c.disk(), c.point);
     const double rejection = 1.0 - gs.g.omega / gs.rect.S;
     if (rejection >= kDetectableRejection) {
       EXPECT_FALSE(r.ok) << "bias not detected (rejection " << rejection << "): " << r.describe;
@@ -246,7 +244,7 @@ TEST(MapUnbiased, BiasedEstimatorsAreDetected) {
   }
   const ellipse::RadialTable coarse = ellipse::RadialTable::build(8, 8);
   for (const auto& c : configs) {
-    auto m = ellipse::TabulatedMap::make(c.center, c.normal, c.radius, c.point, coarse);
+    auto m = ellipse::TabulatedMap::make(c.disk(), c.point, coarse);
     sequence::Pcg32 rng(++seed);
     std::vector<double> biased(kMeanSamples), fair(kMeanSamples);
     std::size_t rejected = 0;
@@ -291,8 +289,8 @@ std::vector<double> bin_solid_angles(const AnyMap& binning, int n) {
 // Expected probabilities for area sampling: the bins' areas on the disk (shoelace formula of the
 // bin boundary's hit points, Richardson-refined) over pi r^2.
 std::vector<double> bin_disk_areas(const AnyMap& binning, const DiskConfig& c, int n) {
-  const auto g = ellipse::MapGeometry::make(c.center, c.normal, c.radius, c.point);
-  const Vec3 e1 = g.xe, e2 = g.n.cross(e1);
+  const auto g = ellipse::MapGeometry::make(c.disk(), c.point);
+  const Vec3 e1 = g.frame.x, e2 = g.normal.cross(e1);
   std::vector<double> p(n * n);
   for (int iy = 0; iy < n; ++iy) {
     for (int ix = 0; ix < n; ++ix) {
@@ -303,7 +301,7 @@ std::vector<double> bin_disk_areas(const AnyMap& binning, const DiskConfig& c, i
         for (int i = 0; i < 4 * k; ++i) {
           // Point i of 4k, k per edge: t = i / (4k) walks the same boundary.
           const Point2 u = stratum_boundary(x0, x1, y0, y1, double(i) / (4 * k));
-          const Vec3 hit = g.hit(binning.sample(u, nullptr).direction) - g.c;
+          const Vec3 hit = g.hit(binning.sample(u, nullptr).direction) - g.center;
           ring[i] = {hit.dot(e1), hit.dot(e2)};
         }
         double sum = 0.0;
@@ -331,19 +329,19 @@ std::vector<double> binned_counts(const std::string& name, const DiskConfig& c,
     if (s.valid) us.push_back(binning.invert_local(s.local));
   };
   if (name == "area") {
-    const auto a = ellipse::AreaSampler::make(c.center, c.normal, c.radius, c.point);
+    const auto a = ellipse::AreaSampler::make(c.disk(), c.point);
     while (us.size() < kChiSamples) {
       const double x = rng.next_double();
       push(a.sample({x, rng.next_double()}));
     }
   } else if (name == "gamito") {
-    const auto gs = ellipse::GamitoSampler::make(c.center, c.normal, c.radius, c.point);
+    const auto gs = ellipse::GamitoSampler::make(c.disk(), c.point);
     while (us.size() < kChiSamples) {
       const double x = rng.next_double();
       push(gs.sample({x, rng.next_double()}, rng));
     }
   } else if (name == "radial4") {
-    const auto r4 = ellipse::Radial4Map::make(c.center, c.normal, c.radius, c.point);
+    const auto r4 = ellipse::Radial4Map::make(c.disk(), c.point);
     while (us.size() < kChiSamples) {
       const double x = rng.next_double();
       for (const auto& s : r4.sample4({x, rng.next_double()}))

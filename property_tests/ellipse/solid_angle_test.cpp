@@ -91,8 +91,7 @@ TEST(SolidAngleReference, ProductionWithin1e14EverywhereAndPrintedFormsLoseOnlyT
     if (err > worst) worst = err, worst_id = row.id;
     // Printed forms with their cancellation factor.
     const double kappa_r = math::kTwoPi / row.omega;
-    const double kappa_p =
-        4.0 * se.c_t * math::ellint_f(math::kHalfPi, se.m) / (se.b_t * row.omega);
+    const double kappa_p = 4.0 * se.a * math::ellint_f(math::kHalfPi, se.m) / (se.b_t * row.omega);
     const double err_r = rel(ellipse::solid_angle_radial_printed(se), row.omega);
     const double err_p = rel(ellipse::solid_angle_parallel_printed(se), row.omega);
     const double cond_r = 1 + 1 / se.one_minus_n_r + 1 / se.one_minus_m;
@@ -258,7 +257,7 @@ RC_GTEST_PROP(SolidAngleSectors, HpAndHrMatchPrintedEquations, (uint64_t seed)) 
   RC_ASSERT(!se.empty);
   const double phi_p = 0.5 * se.beta, phi = 0.7;
   const double p = 1.0 / (se.b_t * se.b_t), sn2 = std::sin(phi_p) * std::sin(phi_p);
-  const double hp9 = se.c_t * std::sqrt((1 - (p + 1) * sn2) / (1 - (se.m * p + 1) * sn2));
+  const double hp9 = se.a * std::sqrt((1 - (p + 1) * sn2) / (1 - (se.m * p + 1) * sn2));
   const double r = se.a * se.b / std::hypot(se.a * std::sin(phi), se.b * std::cos(phi));
   const double hr17 = std::sqrt(1 - r * r);
   RC_LOG() << s.describe() << " h_p=" << ellipse::h_p(se, phi_p) << " eq9=" << hp9

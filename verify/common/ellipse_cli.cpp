@@ -21,6 +21,7 @@ void add_ellipse_options(CLI::App& sub, EllipseOptions& o) {
                  "(with --map)");
   sub.add_option("--radius", o.radius, "Disk radius R > 0 (with --map)");
   sub.add_option("--point", o.point, "Shading point X,Y,Z (with --map)");
+  sub.add_flag("--two-sided", o.two_sided, "The disk emits from both faces (with --map)");
 }
 
 void check_ellipse_exclusive(const EllipseOptions& o, const std::string& strategy) {
@@ -30,7 +31,7 @@ void check_ellipse_exclusive(const EllipseOptions& o, const std::string& strateg
         "spherical-ellipse maps)");
   if (o.map.empty() && o.any_scene_option())
     throw UsageError(
-        "--center, --normal, --radius and --point describe the scene of --map; "
+        "--center, --normal, --radius, --point and --two-sided describe the scene of --map; "
         "give --map NAME (" +
         ellipse_map_list() + ")");
 }
@@ -55,17 +56,18 @@ ellipse::AnyMap make_ellipse_map(const EllipseOptions& o) {
   require_positive(r, "--radius");
   if (!(n.squaredNorm() > 0.0))
     throw UsageError("--normal: '" + o.normal + "' has zero length (the disk has no orientation)");
-  ellipse::AnyMap m = ellipse::AnyMap::make(o.map, c, n, r, p);
+  ellipse::AnyMap m = ellipse::AnyMap::make(o.map, ellipse::Disk{c, n, r, o.two_sided}, p);
   if (!m.valid())
-    throw UsageError(
-        "degenerate geometry: the point " + o.point +
-        " sees no disk (it is behind the one-sided disk, in its plane, or the disk's solid angle "
-        "underflows); the disk emits towards +normal");
+    throw UsageError("degenerate geometry: the point " + o.point + " sees no disk (it is " +
+                     (o.two_sided ? "" : "behind the one-sided disk, ") +
+                     "in its plane, or the disk's solid angle underflows)" +
+                     (o.two_sided ? "" : "; the disk emits towards +normal (or give --two-sided)"));
   return m;
 }
 
 std::string describe_scene(const EllipseOptions& o) {
-  return "c=(" + o.center + ") n=(" + o.normal + ") r=" + o.radius + " o=(" + o.point + ")";
+  return "c=(" + o.center + ") n=(" + o.normal + ") r=" + o.radius + " o=(" + o.point + ")" +
+         (o.two_sided ? " two-sided" : "");
 }
 
 std::string format_sample(const ellipse::EllipseSample& s) {

@@ -1,6 +1,7 @@
 #pragma once
 // The spherical-ellipse options shared by `disklab map` and `disklab points` (--map, --center,
-// --normal, --radius, --point): binding, validation and the output line of one sample.
+// --normal, --radius, --point, --two-sided): binding, validation and the output line of one
+// sample.
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -12,17 +13,18 @@ namespace disklab::cli {
 struct EllipseOptions {
   std::string map;  // empty: not an ellipse run
   std::string center, normal, radius, point;
+  bool two_sided = false;
 
   // Whether any disk/point option was given (they are an error without --map).
   bool any_scene_option() const {
-    return !center.empty() || !normal.empty() || !radius.empty() || !point.empty();
+    return !center.empty() || !normal.empty() || !radius.empty() || !point.empty() || two_sided;
   }
 };
 
 // "area, gamito, ..." (for --help and messages).
 std::string ellipse_map_list();
 
-// Adds --map, --center, --normal, --radius, --point bound to `o`.
+// Adds --map, --center, --normal, --radius, --point, --two-sided bound to `o`.
 void add_ellipse_options(CLI::App& sub, EllipseOptions& o);
 
 // Checks that --map and --strategy are not both given, and that scene options come with --map.

@@ -16,6 +16,19 @@ struct Overloaded : F... {
 template <class... F>
 Overloaded(F...) -> Overloaded<F...>;
 
+// kind() reads the variant's index: the alternatives must be listed in MapKind's order.
+template <MapKind K, class T>
+constexpr bool kAlternative =
+    std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(K), AnyMap::Variant>, T>;
+static_assert(kAlternative<MapKind::area, AreaSampler> &&
+              kAlternative<MapKind::gamito, GamitoSampler> &&
+              kAlternative<MapKind::parallel, ParallelMap> &&
+              kAlternative<MapKind::radial, RadialMap> &&
+              kAlternative<MapKind::ld_radial, LdRadialMap> &&
+              kAlternative<MapKind::radial4, Radial4Map> &&
+              kAlternative<MapKind::tabulated, TabulatedMap> &&
+              kAlternative<MapKind::radial_fast, RadialFastMap>);
+
 }  // namespace
 
 const std::vector<std::string>& map_names() {
@@ -48,8 +61,7 @@ int map_copies(MapKind kind) {
   return kind == MapKind::radial4 ? 4 : 1;
 }
 
-AnyMap AnyMap::make(std::string_view name, const Vec3& center, const Vec3& normal, double radius,
-                    const Vec3& o) {
+AnyMap AnyMap::make(std::string_view name, const Disk& disk, const Vec3& o) {
   const auto kind = parse_map(name);
   if (!kind) {
     std::string valid;
@@ -58,29 +70,29 @@ AnyMap AnyMap::make(std::string_view name, const Vec3& center, const Vec3& norma
     throw std::invalid_argument("unknown spherical-ellipse map '" + std::string(name) +
                                 "' (valid: " + valid + ")");
   }
-  return make(*kind, center, normal, radius, o);
+  return make(*kind, disk, o);
 }
 
-AnyMap AnyMap::make(MapKind kind, const Vec3& c, const Vec3& n, double r, const Vec3& o) {
+AnyMap AnyMap::make(MapKind kind, const Disk& disk, const Vec3& o) noexcept {
   switch (kind) {
     case MapKind::area:
-      return AnyMap(kind, AreaSampler::make(c, n, r, o));
+      return AnyMap(AreaSampler::make(disk, o));
     case MapKind::gamito:
-      return AnyMap(kind, GamitoSampler::make(c, n, r, o));
+      return AnyMap(GamitoSampler::make(disk, o));
     case MapKind::parallel:
-      return AnyMap(kind, ParallelMap::make(c, n, r, o));
+      return AnyMap(ParallelMap::make(disk, o));
     case MapKind::radial:
-      return AnyMap(kind, RadialMap::make(c, n, r, o));
+      return AnyMap(RadialMap::make(disk, o));
     case MapKind::ld_radial:
-      return AnyMap(kind, LdRadialMap::make(c, n, r, o));
+      return AnyMap(LdRadialMap::make(disk, o));
     case MapKind::radial4:
-      return AnyMap(kind, Radial4Map::make(c, n, r, o));
+      return AnyMap(Radial4Map::make(disk, o));
     case MapKind::tabulated:
-      return AnyMap(kind, TabulatedMap::make(c, n, r, o));
+      return AnyMap(TabulatedMap::make(disk, o));
     case MapKind::radial_fast:
-      return AnyMap(kind, RadialFastMap::make(c, n, r, o));
+      return AnyMap(RadialFastMap::make(disk, o));
   }
-  throw std::invalid_argument("unknown spherical-ellipse map kind");
+  return AnyMap(AreaSampler{});  // not reached: every kind is listed
 }
 
 const MapGeometry& AnyMap::geometry() const {

@@ -38,11 +38,6 @@ double height_dot(const Vec3& p, const Vec3& q, const Vec3& n) {
   return sum + comp;
 }
 
-void require_finite(const Vec3& v, const char* what) {
-  if (!v.allFinite())
-    throw std::invalid_argument(std::string("spherical ellipse: non-finite ") + what);
-}
-
 }  // namespace
 
 EllipseShape ellipse_shape(double h, double e, double r) {
@@ -94,17 +89,30 @@ EllipseShape ellipse_shape(double h, double e, double r) {
   return s;
 }
 
+bool valid_disk_input(const Disk& disk, const Vec3& o) noexcept {
+  if (!disk.center.allFinite() || !disk.normal.allFinite() || !o.allFinite()) return false;
+  if (!std::isfinite(disk.radius) || disk.radius < 0.0) return false;
+  const double nn = disk.normal.norm();
+  return nn > 0.0 && std::isfinite(nn);
+}
+
 SphericalEllipse make_spherical_ellipse(const Disk& disk, const Vec3& o) {
-  require_finite(disk.center, "disk centre");
-  require_finite(disk.normal, "disk normal");
-  require_finite(o, "shading point");
+  if (!disk.center.allFinite())
+    throw std::invalid_argument("spherical ellipse: non-finite disk centre");
+  if (!disk.normal.allFinite())
+    throw std::invalid_argument("spherical ellipse: non-finite disk normal");
+  if (!o.allFinite()) throw std::invalid_argument("spherical ellipse: non-finite shading point");
   if (!std::isfinite(disk.radius))
     throw std::invalid_argument("spherical ellipse: non-finite radius");
   if (disk.radius < 0.0) throw std::invalid_argument("spherical ellipse: negative radius");
-  const double nn = disk.normal.norm();
-  if (!(nn > 0.0) || !std::isfinite(nn))
+  if (!valid_disk_input(disk, o))
     throw std::invalid_argument("spherical ellipse: zero (or overflowing) normal");
+  return spherical_ellipse(disk, o);
+}
 
+SphericalEllipse spherical_ellipse(const Disk& disk, const Vec3& o) noexcept {
+  if (!valid_disk_input(disk, o)) return {};
+  const double nn = disk.normal.norm();
   SphericalEllipse se;
   se.origin = o;
   se.center = disk.center;
@@ -131,7 +139,7 @@ SphericalEllipse make_spherical_ellipse(const Disk& disk, const Vec3& o) {
   const double e = v_unit_max.cross(n).norm() * v_max;
 
   // Eq. (3) with x and y swapped (DESIGN.md Sec. 3): x_d = normalize(z_d x (c - o)).
-  se.disk_frame = math::Frame::from_zx(zd, zd.cross(v_unit_max));
+  const math::Frame disk_frame = math::Frame::from_zx(zd, zd.cross(v_unit_max));
   const EllipseShape s = ellipse_shape(h, e, disk.radius);
   if (!(s.a_t > 0.0) || !std::isfinite(s.a_t) || !(s.b_t > 0.0) || !std::isfinite(s.b_t))
     return se;  // under/overflow at absurd scales: nothing measurable
@@ -150,17 +158,11 @@ SphericalEllipse make_spherical_ellipse(const Disk& disk, const Vec3& o) {
   se.one_minus_m = s.one_minus_m;
   se.n_r = s.n_r;
   se.one_minus_n_r = s.one_minus_n_r;
-  se.n_p = -s.b_t * s.b_t;
-  se.c_t = s.c_t;
   se.radial_coefficient = s.radial_coefficient;
 
-  {
-    // c - o = (0, -e, h) in R_d; z_e = (0, -e, h (1 + a_t^2)) / zn, y_e = z_e x x_e.
-    const double k = h * (1.0 + s.a_t * s.a_t), zn = std::hypot(e, k);
-    se.center_local = Vec3(0.0, -(e / zn) * h * (s.a_t * s.a_t), (e / zn) * e + (k / zn) * h);
-  }
-  se.frame.x = se.disk_frame.x;
-  se.frame.z = (s.ze_y * se.disk_frame.y + s.ze_z * se.disk_frame.z).normalized();
+  // z_e = (0, ze_y, ze_z) in R_d, y_e = z_e x x_e.
+  se.frame.x = disk_frame.x;
+  se.frame.z = (s.ze_y * disk_frame.y + s.ze_z * disk_frame.z).normalized();
   se.frame.y = se.frame.z.cross(se.frame.x);
 
   // Radial sector split (solid_angle.h): Gauss-Legendre where r_t^2 <= 3, eq. (19) where

@@ -14,7 +14,7 @@ namespace {
 MapGeometry scene(double alpha_ref, double theta) {
   const double D = 1.0 / std::tan(alpha_ref);
   const Vec3 c(D * std::sin(theta), 0.0, D * std::cos(theta));
-  return MapGeometry::make(c, Vec3(0, 0, -1), 1.0, Vec3::Zero());
+  return MapGeometry::make(Disk{c, Vec3(0, 0, -1), 1.0, false}, Vec3::Zero());
 }
 
 // The scene whose beta / alpha equals `ratio` (bisection on the view angle; not a hot path).

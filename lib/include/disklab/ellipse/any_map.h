@@ -65,16 +65,19 @@ class AnyMap {
   using Variant = std::variant<AreaSampler, GamitoSampler, ParallelMap, RadialMap, LdRadialMap,
                                Radial4Map, TabulatedMap, RadialFastMap>;
 
-  // Throws std::invalid_argument("unknown spherical-ellipse map 'x' (valid: ...)").
-  static AnyMap make(std::string_view name, const Vec3& center, const Vec3& normal, double radius,
-                     const Vec3& o);
-  static AnyMap make(MapKind kind, const Vec3& center, const Vec3& normal, double radius,
-                     const Vec3& o);
+  // The map of `kind` for `disk` seen from the shading point `o`. Never throws, never
+  // allocates; degenerate geometry gives a map with !valid().
+  static AnyMap make(MapKind kind, const Disk& disk, const Vec3& o) noexcept;
+  // By name, for the CLI and scene files. Throws std::invalid_argument("unknown
+  // spherical-ellipse map 'x' (valid: ...)"); code built without exceptions uses parse_map and
+  // the overload above.
+  static AnyMap make(std::string_view name, const Disk& disk, const Vec3& o);
 
-  MapKind kind() const { return kind_; }
-  std::string_view name() const { return map_name(kind_); }
-  bool has_inverse() const { return map_has_inverse(kind_); }
-  int copies() const { return map_copies(kind_); }
+  // The variant's alternatives are in MapKind's order.
+  MapKind kind() const { return static_cast<MapKind>(map_.index()); }
+  std::string_view name() const { return map_name(kind()); }
+  bool has_inverse() const { return map_has_inverse(kind()); }
+  int copies() const { return map_copies(kind()); }
   // False when the point sees nothing (behind the one-sided disk, in its plane, zero radius,
   // non-finite input): every sample is then "no sample".
   bool valid() const { return !geometry().empty; }
@@ -100,8 +103,7 @@ class AnyMap {
   const Variant& variant() const { return map_; }
 
  private:
-  AnyMap(MapKind kind, Variant map) : kind_(kind), map_(std::move(map)) {}
-  MapKind kind_;
+  explicit AnyMap(Variant map) : map_(std::move(map)) {}
   Variant map_;
 };
 

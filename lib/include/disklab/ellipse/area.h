@@ -21,14 +21,14 @@ struct AreaSampler {
   Vec3 center_local = Vec3::UnitZ();            // R_e^T (c - o)
   double inv_area = 0.0;
 
-  static AreaSampler make(const Vec3& center, const Vec3& normal, double radius, const Vec3& o) {
+  static AreaSampler make(const Disk& disk, const Vec3& o) {
     AreaSampler s;
-    s.g = MapGeometry::make(center, normal, radius, o);
+    s.g = MapGeometry::make(disk, o);
     if (s.g.empty) return s;
-    s.e1 = s.g.xe;  // x_e = x_d lies in the disk plane
-    s.e2 = s.g.n.cross(s.e1);
-    s.center_local = s.g.se.center_local;  // closed form: no eps |c - o| error across the axis
-    s.inv_area = 1.0 / (math::kPi * radius * radius);
+    s.e1 = s.g.frame.x;  // x_e = x_d lies in the disk plane
+    s.e2 = s.g.normal.cross(s.e1);
+    s.center_local = s.g.center_local();  // closed form: no eps |c - o| error across the axis
+    s.inv_area = 1.0 / (math::kPi * s.g.radius * s.g.radius);
     return s;
   }
   bool valid() const { return !g.empty; }
@@ -42,9 +42,9 @@ struct AreaSampler {
     const double dist = std::sqrt(dist2);
     EllipseSample out;
     out.local = v / dist;
-    out.point = g.c + offset;
+    out.point = g.center + offset;
     out.direction = g.to_world(out.local).normalized();
-    const double cos_light = std::abs(out.direction.dot(g.n));
+    const double cos_light = std::abs(out.direction.dot(g.normal));
     out.pdf = cos_light > 0.0 ? dist2 * inv_area / cos_light : 0.0;
     out.valid = out.pdf > 0.0 && std::isfinite(out.pdf);
     return out;
@@ -54,15 +54,15 @@ struct AreaSampler {
   double pdf(const Vec3& direction) const {
     if (g.empty) return 0.0;
     const Vec3 x = g.hit(direction);
-    if ((x - g.c).squaredNorm() > g.radius * g.radius * (1.0 + 1e-12)) return 0.0;
-    const double cos_light = std::abs(direction.normalized().dot(g.n));
-    return cos_light > 0.0 ? (x - g.o).squaredNorm() * inv_area / cos_light : 0.0;
+    if ((x - g.center).squaredNorm() > g.radius * g.radius * (1.0 + 1e-12)) return 0.0;
+    const double cos_light = std::abs(direction.normalized().dot(g.normal));
+    return cos_light > 0.0 ? (x - g.origin).squaredNorm() * inv_area / cos_light : 0.0;
   }
 
   // Direction -> (u, v) through the disk point and the inverse concentric map.
   Point2 invert(const Vec3& direction) const {
     if (g.empty) return {};
-    const Vec3 off = g.hit(direction) - g.c;
+    const Vec3 off = g.hit(direction) - g.center;
     return disk::invert_concentric({off.dot(e1) / g.radius, off.dot(e2) / g.radius});
   }
 };

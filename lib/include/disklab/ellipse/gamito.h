@@ -33,13 +33,13 @@ struct GamitoSampler {
   double pdf = 0.0;           // 1/Omega, density of accepted samples
   double proposal_pdf = 0.0;  // 1/S, density of candidates
 
-  static GamitoSampler make(const Vec3& center, const Vec3& normal, double radius, const Vec3& o) {
+  static GamitoSampler make(const Disk& disk, const Vec3& o) {
     GamitoSampler s;
-    s.g = MapGeometry::make(center, normal, radius, o);
+    s.g = MapGeometry::make(disk, o);
     if (s.g.empty) return s;
-    const Vec3 e1 = s.g.xe, e2 = s.g.n.cross(e1);
-    s.rect = SphericalRectangle::make(o, center - radius * (e1 + e2), 2.0 * radius * e1,
-                                      2.0 * radius * e2);
+    const Vec3 e1 = s.g.frame.x, e2 = s.g.normal.cross(e1);
+    s.rect = SphericalRectangle::make(o, s.g.center - s.g.radius * (e1 + e2), 2.0 * s.g.radius * e1,
+                                      2.0 * s.g.radius * e2);
     if (!s.rect.valid) {
       s.g.empty = true;
       return s;
@@ -56,13 +56,13 @@ struct GamitoSampler {
     const Vec3 p = rect.sample_point(u.x, u.y);
     EllipseSample out;
     out.point = p;
-    const Vec3 d = p - g.o;
+    const Vec3 d = p - g.origin;
     out.direction = d.normalized();
     // Local direction from the small offset p - c (accurate for distant disks).
-    const Vec3 v = g.to_local(g.c - g.o) + g.to_local(p - g.c);
+    const Vec3 v = g.to_local(g.center - g.origin) + g.to_local(p - g.center);
     out.local = v.normalized();
     out.pdf = proposal_pdf;
-    out.valid = (p - g.c).squaredNorm() <= g.radius * g.radius;
+    out.valid = (p - g.center).squaredNorm() <= g.radius * g.radius;
     return out;
   }
 

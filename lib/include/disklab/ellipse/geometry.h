@@ -24,6 +24,7 @@
 //     z_e ~ (0, -e, h (1 + 2 r^2 / K)) in R_d.
 // Every quantity is a product/quotient of positive terms: no cancellation at any distance
 // (S - P is formed as 4 e^2 h^2 / (S + P) when P > 0). a_t >= b_t follows from S >= P.
+#include <cmath>
 #include <limits>
 
 #include "disklab/math/frame.h"
@@ -55,13 +56,7 @@ struct SphericalEllipse {
   double h = 0.0;               // height of o above the lit face, > 0 unless empty
   double e = 0.0;               // in-plane distance from the foot of o to c, >= 0
 
-  math::Frame disk_frame;  // R_d = (x_d, y_d, z_d), eq. (3) with x, y swapped (DESIGN.md)
-  math::Frame frame;       // R_e = (x_e, y_e, z_e): x_e = x_d, z_e = ellipse centre
-  // c - o in R_e, from the scalars (0, -e h a_t^2, e^2 + h^2 (1 + a_t^2)) / |(e, h (1 + a_t^2))|:
-  // exact to a few ulps of each component. Projecting the world vector c - o onto x_e, y_e
-  // instead carries an absolute error ~eps |c - o|, i.e. relative ~eps |c - o| / r of the
-  // ellipse's size: 1e-8 at 1e8 radii.
-  Vec3 center_local = Vec3::UnitZ();
+  math::Frame frame;  // R_e = (x_e, y_e, z_e): x_e = x_d, z_e = ellipse centre
 
   // Shape (Sec. 3): semi-arcs alpha >= beta (eq. 5), planar semi-axes a = sin(alpha) >= b =
   // sin(beta) (eq. 4, the ellipse projected on the x_e y_e plane, a along x_e), tangent-ellipse
@@ -76,9 +71,9 @@ struct SphericalEllipse {
   // m = (a_t^2 - b_t^2)/(a_t^2 + 1) = (a^2 - b^2)/(1 - b^2).
   double m = 0.0, one_minus_m = 1.0;
   double n_r = 0.0, one_minus_n_r = 1.0;  // radial characteristic n of eq. (20) and 1 - n
-  double n_p = 0.0;                       // parallel characteristic n = -b_t^2 of eq. (12)
-  double c_t = 0.0;                       // eq. (10): a_t / sqrt(1 + a_t^2) (= a)
   double radial_coefficient = 0.0;        // eq. (19): b (1 - a^2) / (a sqrt(1 - b^2)) (= a h / r)
+  // Eq. (10)'s c_t = a_t / sqrt(1 + a_t^2) is the planar semi-axis a itself.
+  double n_p() const { return -b_t * b_t; }  // parallel characteristic n = -b_t^2 of eq. (12)
 
   // Solid angle of the disk (production, cancellation-free, see solid_angle.h) and the radial
   // quadrant Omega_r(pi/2) evaluated by the same function as Omega_r(phi) (radial_sector), so
@@ -93,12 +88,36 @@ struct SphericalEllipse {
   // World direction of local coordinates in R_e, and back.
   Vec3 to_world(const Vec3& local) const { return frame.to_world(local); }
   Vec3 to_local(const Vec3& world) const { return frame.to_local(world); }
+
+  // R_d = (x_d, y_d, z_d), eq. (3) with x and y swapped (DESIGN.md): z_d = -normal, x_d = x_e,
+  // y_d = z_d x x_d.
+  math::Frame disk_frame() const {
+    math::Frame f;
+    f.z = -normal;
+    f.x = frame.x;
+    f.y = f.z.cross(f.x);
+    return f;
+  }
+  // c - o in R_e, from the scalars (0, -e h a_t^2, e^2 + h^2 (1 + a_t^2)) / |(e, h (1 + a_t^2))|:
+  // exact to a few ulps of each component. Projecting the world vector c - o onto x_e, y_e
+  // instead carries an absolute error ~eps |c - o|, i.e. relative ~eps |c - o| / r of the
+  // ellipse's size: 1e-8 at 1e8 radii.
+  Vec3 center_local() const {
+    if (empty) return Vec3::UnitZ();
+    const double k = h * (1.0 + a_t * a_t), zn = std::hypot(e, k);
+    return {0.0, -(e / zn) * h * (a_t * a_t), (e / zn) * e + (k / zn) * h};
+  }
 };
 
 // Builds the spherical ellipse of `disk` seen from `o`.
 // Throws std::invalid_argument for non-finite input, a zero normal or a negative radius.
 // Defined answers: radius 0, o in the disk's plane, o behind a one-sided disk -> empty.
 SphericalEllipse make_spherical_ellipse(const Disk& disk, const Vec3& o);
+// The same without exceptions: invalid input also gives an empty ellipse (for the samplers'
+// set-up, which renderers may build with -fno-exceptions).
+SphericalEllipse spherical_ellipse(const Disk& disk, const Vec3& o) noexcept;
+// Whether make_spherical_ellipse accepts the input (finite, non-zero normal, radius >= 0).
+bool valid_disk_input(const Disk& disk, const Vec3& o) noexcept;
 
 // The shape alone from the scalar scene (h > 0, e >= 0, r > 0): fills a, b, alpha, beta, a_t, b_t,
 // the complements, m, n and the coefficients, and the directions of z_e in R_d as (0, y, z)

@@ -19,8 +19,8 @@ namespace disklab::ellipse {
 struct LdRadialMap {
   RadialMap radial;
 
-  static LdRadialMap make(const Vec3& center, const Vec3& normal, double radius, const Vec3& o) {
-    return LdRadialMap{RadialMap::make(center, normal, radius, o)};
+  static LdRadialMap make(const Disk& disk, const Vec3& o) {
+    return LdRadialMap{RadialMap::make(disk, o)};
   }
   bool valid() const { return radial.valid(); }
   double pdf() const { return radial.pdf; }

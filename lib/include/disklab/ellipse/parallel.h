@@ -32,7 +32,7 @@ struct ParallelMap {
   RadialSeries series;
 
   static RadialSeries make_series(const SphericalEllipse& se) {
-    const double bt2 = se.b_t * se.b_t, k = 2.0 * se.c_t * se.b_t, om = se.one_minus_m;
+    const double bt2 = se.b_t * se.b_t, k = 2.0 * se.a * se.b_t, om = se.one_minus_m;
     const double rho_b = bt2 > 0.0 ? RadialSeries::acosh1p(2.0 / bt2) : HUGE_VAL;
     const double rho_m = se.m > 0.0 ? RadialSeries::acosh1p(2.0 * om / se.m) : HUGE_VAL;
     // F/k - 1 = c^2 / (Delta (1 + b_t^2 s^2)) - 1
@@ -48,20 +48,20 @@ struct ParallelMap {
   double half_total() const { return use_series() ? series.quadrant : half; }
   // Omega_p^+(varphi) from v, cos v, sin v.
   double half_sector(double v, double cv, double sv) const {
-    return use_series() ? series.omega(v, cv, sv) : parallel_half_sector_parametric(g.se, v);
+    return use_series() ? series.omega(v, cv, sv) : parallel_half_sector_parametric(g, v);
   }
 
-  static ParallelMap make(const Vec3& center, const Vec3& normal, double radius, const Vec3& o) {
+  static ParallelMap make(const Disk& disk, const Vec3& o) {
     ParallelMap m;
-    m.g = MapGeometry::make(center, normal, radius, o);
+    m.g = MapGeometry::make(disk, o);
     if (m.g.empty) return m;
-    m.half = parallel_half_sector_parametric(m.g.se, math::kHalfPi);
+    m.half = parallel_half_sector_parametric(m.g, math::kHalfPi);
     if (!(m.half > 0.0)) {
       m.g.empty = true;
       return m;
     }
     m.pdf = 1.0 / m.g.omega;
-    m.series = make_series(m.g.se);
+    m.series = make_series(m.g);
     return m;
   }
   bool valid() const { return !g.empty; }
@@ -74,9 +74,9 @@ struct ParallelMap {
     if (iterations) *iterations = 0;
     if (!(f > 0.0)) return 0.0;
     if (!(f < 1.0)) return math::kHalfPi;
-    const SphericalEllipse& se = g.se;
+    const SphericalEllipse& se = g;
     const double target = f * half_total();
-    const double k = 2.0 * se.c_t * se.b_t, bt2 = se.b_t * se.b_t;
+    const double k = 2.0 * se.a * se.b_t, bt2 = se.b_t * se.b_t;
     auto eval = [this, &se, target, k, bt2](double v) {
       const double sv = std::sin(v), cv = std::cos(v);
       const double delta = std::sqrt(cv * cv + se.one_minus_m * sv * sv);
@@ -112,9 +112,9 @@ struct ParallelMap {
     const bool positive = e1 >= 0.5;
     const double f = positive ? 2.0 * e1 - 1.0 : 1.0 - 2.0 * e1;
     const double v = solve_varphi(f, iterations);
-    const double phi = parallel_azimuth(g.se, v);
+    const double phi = parallel_azimuth(g, v);
     const double phi_p = positive ? phi : -phi;
-    const double h = (2.0 * e2 - 1.0) * h_p_parametric(g.se, v);  // eq. (14)
+    const double h = (2.0 * e2 - 1.0) * h_p_parametric(g, v);  // eq. (14)
     const double rho = std::sqrt(std::max(0.0, (1.0 - h) * (1.0 + h)));
     const Vec3 local(h, rho * std::sin(phi_p), rho * std::cos(phi_p));  // eq. (15)
     return finish_sample(g, local, pdf);
@@ -124,10 +124,10 @@ struct ParallelMap {
   Point2 invert_local(const Vec3& l) const {
     if (g.empty) return {};
     const double phi_p = std::atan2(l.y(), l.z());
-    const double v = parallel_parametric_angle(g.se, std::min(std::abs(phi_p), g.beta));
+    const double v = parallel_parametric_angle(g, std::min(std::abs(phi_p), g.beta));
     const double f = std::clamp(half_sector(v, std::cos(v), std::sin(v)) / half_total(), 0.0, 1.0);
     const double e1 = std::signbit(phi_p) ? 0.5 - 0.5 * f : 0.5 + 0.5 * f;
-    const double hp = h_p_parametric(g.se, v);
+    const double hp = h_p_parametric(g, v);
     const double e2 = hp > 0.0 ? std::clamp(0.5 * (l.x() / hp + 1.0), 0.0, 1.0) : 0.5;
     return {e1, e2};
   }

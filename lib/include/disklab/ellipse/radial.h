@@ -53,7 +53,7 @@ struct RadialSeries {
 
   static RadialSeries make(const MapGeometry& g) {
     if (g.empty) return {};
-    const double A = g.cos2_alpha, B = g.cos2_beta;
+    const double A = g.one_minus_a2, B = g.one_minus_b2;
     const double diff = g.a2_minus_b2;  // B - A = a^2 - b^2
     const double ab = g.a * g.b;
     // log rho = acosh(x*), x* - 1 = 2A / (B - A).
@@ -182,7 +182,7 @@ struct RadialQuadrant {
   // 1 - h_r and the planar radius^2 at parametric angle s.
   double one_minus_hr_s(double cs, double ss) const {
     const double r2 = g->a * g->a * cs * cs + g->b * g->b * ss * ss;
-    const double one_minus_r2 = g->cos2_alpha * cs * cs + g->cos2_beta * ss * ss;
+    const double one_minus_r2 = g->one_minus_a2 * cs * cs + g->one_minus_b2 * ss * ss;
     return r2 / (1.0 + std::sqrt(std::max(0.0, one_minus_r2)));
   }
 
@@ -197,7 +197,7 @@ struct RadialQuadrant {
     const RadialSeries* fast = use_series() ? series : nullptr;
     auto eval = [this, fast, target, ab](double s) {
       const double cs = std::cos(s), ss = std::sin(s);
-      const double one_minus_r2 = g->cos2_alpha * cs * cs + g->cos2_beta * ss * ss;
+      const double one_minus_r2 = g->one_minus_a2 * cs * cs + g->one_minus_b2 * ss * ss;
       const double deriv = ab / (1.0 + std::sqrt(std::max(0.0, one_minus_r2)));
       const double value = fast ? fast->omega(s, cs, ss) : g->radial_sector_s(s);
       return std::pair<double, double>(value - target, deriv);
@@ -232,7 +232,7 @@ struct RadialQuadrant {
     if (!(t < 1.0)) return {math::kHalfPi, std::cos(math::kHalfPi), 1.0};
     const RadialSeries& S = *series;
     const double target = t * S.quadrant, tol = kRadialNewtonTol * S.quadrant;
-    const double ab = g->a * g->b, A = g->cos2_alpha, B = g->cos2_beta;
+    const double ab = g->a * g->b, A = g->one_minus_a2, B = g->one_minus_b2;
     const double diff = g->a2_minus_b2;  // B - A
     const double h_min = g->cos_alpha;
     const double curvature = ab * diff / (h_min * (1.0 + h_min) * (1.0 + h_min));
@@ -340,9 +340,9 @@ struct RadialMap {
   RadialSeries series;  // Omega_r(s) for the root solves (falls back to solid_angle.h if n == 0)
   double pdf = 0.0;
 
-  static RadialMap make(const Vec3& center, const Vec3& normal, double radius, const Vec3& o) {
+  static RadialMap make(const Disk& disk, const Vec3& o) {
     RadialMap m;
-    m.g = MapGeometry::make(center, normal, radius, o);
+    m.g = MapGeometry::make(disk, o);
     m.pdf = m.g.empty ? 0.0 : 1.0 / m.g.omega;
     m.series = RadialSeries::make(m.g);
     return m;

@@ -14,8 +14,8 @@ namespace disklab::ellipse {
 struct Radial4Map {
   RadialMap radial;
 
-  static Radial4Map make(const Vec3& center, const Vec3& normal, double radius, const Vec3& o) {
-    return Radial4Map{RadialMap::make(center, normal, radius, o)};
+  static Radial4Map make(const Disk& disk, const Vec3& o) {
+    return Radial4Map{RadialMap::make(disk, o)};
   }
   bool valid() const { return radial.valid(); }
   double pdf() const { return radial.pdf; }

@@ -28,15 +28,15 @@ struct RadialFastMap {
   bool hermite = false;                 // the per-shading-point seed below is in use
   double poly[kSeedIntervals][6] = {};  // s on [j/M, (j+1)/M] as a quintic in the local x
 
-  static RadialFastMap make(const Vec3& center, const Vec3& normal, double radius, const Vec3& o,
+  static RadialFastMap make(const Disk& disk, const Vec3& o,
                             const RadialTable& t = RadialTable::shared()) {
     RadialFastMap m;
-    m.radial = RadialMap::make(center, normal, radius, o);
+    m.radial = RadialMap::make(disk, o);
     if (!m.radial.valid()) return m;
     if (m.radial.series.n > 0) {
       m.build_hermite();
     } else {
-      m.table = TabulatedMap::make(center, normal, radius, o, t);
+      m.table = TabulatedMap::make(disk, o, t);
     }
     return m;
   }
@@ -82,7 +82,7 @@ struct RadialFastMap {
     const MapGeometry& g = radial.g;
     const RadialQuadrant q = radial.quadrant();
     const double Q = radial.series.quadrant, ab = g.a * g.b;
-    const double A = g.cos2_alpha, B = g.cos2_beta, diff = g.a2_minus_b2;
+    const double A = g.one_minus_a2, B = g.one_minus_b2, diff = g.a2_minus_b2;
     constexpr int M = kSeedIntervals;
     constexpr double H = 1.0 / M;
     double s[M + 1], d1[M + 1], d2[M + 1];

@@ -69,10 +69,10 @@ inline double solid_angle_radial_printed(const SphericalEllipse& se) {
 // 2 (2 c_t / b_t) [(1 - n) Pi(n; pi/2|m) - F(pi/2|m)], n = -b_t^2. Cancels for small b_t.
 inline double solid_angle_parallel_printed(const SphericalEllipse& se) {
   if (se.empty) return 0.0;
-  const double n = se.n_p;
+  const double n = se.n_p();
   const double bracket =
       (1.0 - n) * math::ellint_pi(n, math::kHalfPi, se.m) - math::ellint_f(math::kHalfPi, se.m);
-  return 2.0 * (2.0 * se.c_t / se.b_t) * bracket;
+  return 2.0 * (2.0 * se.a / se.b_t) * bracket;
 }
 
 // -------------------------------------------------------------------------------------------
@@ -209,7 +209,7 @@ inline double h_p_parametric(const SphericalEllipse& se, double varphi_p) {
   if (se.empty) return 0.0;
   const double s = std::sin(varphi_p), c = std::cos(varphi_p);
   const double delta2 = c * c + se.one_minus_m * s * s;
-  return se.c_t * std::fabs(c) / std::sqrt(delta2);
+  return se.a * std::fabs(c) / std::sqrt(delta2);
 }
 // Eq. (9): h_p(phi_p), phi_p in [-beta, beta] (even).
 inline double h_p(const SphericalEllipse& se, double phi_p) {
@@ -222,9 +222,9 @@ inline double h_p(const SphericalEllipse& se, double phi_p) {
 inline double parallel_half_sector_parametric(const SphericalEllipse& se, double varphi_p) {
   if (se.empty || !(varphi_p > 0.0)) return 0.0;
   if (varphi_p > math::kHalfPi) varphi_p = math::kHalfPi;
-  const double bracket = math::ellint_one_minus_n_pi_minus_f(se.n_p, 1.0 + se.b_t * se.b_t,
+  const double bracket = math::ellint_one_minus_n_pi_minus_f(se.n_p(), 1.0 + se.b_t * se.b_t,
                                                              varphi_p, se.m, se.one_minus_m);
-  return 2.0 * se.c_t / se.b_t * bracket;
+  return 2.0 * se.a / se.b_t * bracket;
 }
 // Omega_p^+(phi_p), phi_p in [0, beta] (eqs. 8/11). Omega_p^+(beta) = omega / 2.
 inline double parallel_half_sector(const SphericalEllipse& se, double phi_p) {
@@ -234,9 +234,8 @@ inline double parallel_half_sector(const SphericalEllipse& se, double phi_p) {
 inline double parallel_half_sector_printed(const SphericalEllipse& se, double phi_p) {
   if (se.empty || !(phi_p > 0.0)) return 0.0;
   const double v = parallel_parametric_angle(se, phi_p);
-  const double n = se.n_p;
-  return 2.0 * se.c_t / se.b_t *
-         ((1.0 - n) * math::ellint_pi(n, v, se.m) - math::ellint_f(v, se.m));
+  const double n = se.n_p();
+  return 2.0 * se.a / se.b_t * ((1.0 - n) * math::ellint_pi(n, v, se.m) - math::ellint_f(v, se.m));
 }
 
 // -------------------------------------------------------------------------------------------

@@ -56,10 +56,10 @@ struct TabulatedMap {
   double pdf_uniform = 0.0;  // 1/Omega (for the biased variant and for reference)
   bool biased = false;       // the authors' estimator: pdf 1/Omega, zero on rejection
 
-  static TabulatedMap make(const Vec3& center, const Vec3& normal, double radius, const Vec3& o,
+  static TabulatedMap make(const Disk& disk, const Vec3& o,
                            const RadialTable& table = RadialTable::shared()) {
     TabulatedMap m;
-    m.g = MapGeometry::make(center, normal, radius, o);
+    m.g = MapGeometry::make(disk, o);
     m.table = &table;
     if (m.g.empty) return m;
     m.pdf_uniform = 1.0 / m.g.omega;
