@@ -181,7 +181,8 @@ int run_ellipse_inverse(const MapState& s) {
   if (!m.has_inverse())
     throw UsageError("--inverse: map " + std::string(m.name()) +
                      " has no inverse (a rejection sampler over a spherical rectangle)");
-  const std::optional<Point2> u = m.invert(d);
+  // The CLI prints radial4's four copies forward, so its inverse is the copies' (invert_copy).
+  const std::optional<Point2> u = m.invert_copy(d);
   if (!u)
     throw UsageError("--dir: (" + s.dir + ") misses the disk (outside the spherical ellipse)");
   print_point(*u);

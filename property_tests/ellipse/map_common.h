@@ -109,7 +109,10 @@ inline AnyMap make_map(const std::string& name, const DiskConfig& c) {
     m.omega = p->radial.g.omega;
     m.measure = 0.25 * m.omega;
     m.sample = [p](Point2 u, int* it) { return p->sample_quadrant(u, it); };
-    m.invert_local = [p](const Vec3& l) { return p->invert_local(l); };
+    m.invert_local = [p](const Vec3& l) {
+      int k;
+      return p->invert_copy_local(l, k);
+    };
   } else if (name == "radial-fast") {
     auto p =
         std::make_shared<ellipse::RadialFastMap>(ellipse::RadialFastMap::make(c.disk(), c.point));

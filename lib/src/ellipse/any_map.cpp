@@ -111,7 +111,6 @@ EllipseSample AnyMap::sample(Point2 u, int* iterations) const {
                         [&](const AreaSampler& m) { return m.sample(u); },
                         [&](const GamitoSampler& m) { return m.propose(u); },
                         [&](const TabulatedMap& m) { return m.sample(u); },
-                        [&](const Radial4Map& m) { return m.sample_quadrant(u, iterations); },
                         [&](const auto& m) { return m.sample(u, iterations); },
                     },
                     map_);
@@ -127,17 +126,8 @@ int AnyMap::sample_copies(Point2 u, std::array<EllipseSample, 4>& out, int* iter
   return 1;
 }
 
-bool AnyMap::contains(const Vec3& direction) const {
-  const MapGeometry& g = geometry();
-  if (g.empty || !direction.allFinite()) return false;
-  const double len = direction.norm();
-  if (!(len > 0.0)) return false;
-  const Vec3 l = g.to_local(direction / len);
-  if (!(l.z() > 0.0)) return false;
-  const double slack =
-      1.0 + kRimSlack + 16.0 * std::numeric_limits<double>::epsilon() / std::min(g.b_t, g.a_t);
-  const double qx = l.x() / g.a_t, qy = l.y() / g.b_t;
-  return qx * qx + qy * qy <= l.z() * l.z() * slack * slack;
+double AnyMap::pdf(const Vec3& direction) const {
+  return std::visit([&](const auto& m) { return m.pdf(direction); }, map_);
 }
 
 std::optional<Point2> AnyMap::invert(const Vec3& direction) const {
@@ -152,6 +142,18 @@ std::optional<Point2> AnyMap::invert(const Vec3& direction) const {
                               },
                               map_);
   if (!std::isfinite(u.x) || !std::isfinite(u.y)) return std::nullopt;
+  return u;
+}
+
+std::optional<Point2> AnyMap::invert_copy(const Vec3& direction, int* copy) const {
+  if (copy) *copy = 0;
+  const auto* m = std::get_if<Radial4Map>(&map_);
+  if (m == nullptr) return invert(direction);
+  if (!contains(direction)) return std::nullopt;
+  int k = 0;
+  const Point2 u = m->invert_copy_local(geometry().to_local(direction.normalized()), k);
+  if (!std::isfinite(u.x) || !std::isfinite(u.y)) return std::nullopt;
+  if (copy) *copy = k;
   return u;
 }
 

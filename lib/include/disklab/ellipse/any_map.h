@@ -9,16 +9,20 @@
 //    gamito and tabulated run in PROPOSAL mode (one candidate per u; valid == accepted; pdf is
 //    the proposal's solid-angle density, so (1/N) sum_{accepted} f / pdf is unbiased with N
 //    counting every candidate, DESIGN.md Sec. 3 "Rejection must stay unbiased").
-//  - radial4 yields copies() == 4 directions per u (the ellipse's reflections, counter-clockwise
-//    from quadrant 0); sample(u) is copy 0 and sample_copies() gives all four, each with pdf
-//    1/Omega. Its inverse returns the u of which the direction is copy k (k = its quadrant).
+//  - radial4 yields copies() == 4 directions per u through sample_copies() (the ellipse's
+//    reflections, counter-clockwise from quadrant 0, each with pdf 1/Omega; invert_copy() is
+//    their inverse). sample(u) is a full-ellipse sample, the radial map's, so that an estimator
+//    built on sample() alone stays unbiased.
 //  - pdf is always in the solid-angle measure; `valid == false` means "no sample" (degenerate
 //    geometry or a rejected candidate), never NaN.
 //  - invert(direction) takes any non-zero direction (it need not be unit) and returns nothing
 //    when the map has no inverse (gamito), the geometry is empty, or the direction misses the
 //    disk (see contains()).
-// Hot paths (sample, sample_copies, invert, contains) allocate nothing and throw nothing; make()
-// throws std::invalid_argument only for an unknown name (degenerate geometry gives !valid()).
+// Hot paths (sample, sample_copies, pdf, invert, contains) and make(MapKind, ...) allocate
+// nothing and throw nothing; make(name, ...) throws std::invalid_argument for an unknown name
+// (degenerate geometry gives !valid()). The tabulated map reads a table shared by the process,
+// built once on first use (RadialTable::shared(); call it up front to keep that out of a render
+// loop).
 #include <array>
 #include <optional>
 #include <string>
@@ -54,12 +58,6 @@ bool map_is_uniform(MapKind kind);
 // Directions per square point (4 for radial4, else 1).
 int map_copies(MapKind kind);
 
-// A direction within this relative slack of the rim counts as inside (contains()): directions
-// read back from %.17g text, or produced on the rim (eps2 = 1), lie within a few ulps of it.
-// The local-frame coordinates of a unit world direction carry an absolute error ~eps, i.e. a
-// relative error ~eps / b_t in the thin direction, which contains() adds to this slack.
-inline constexpr double kRimSlack = 1e-9;
-
 class AnyMap {
  public:
   using Variant = std::variant<AreaSampler, GamitoSampler, ParallelMap, RadialMap, LdRadialMap,
@@ -85,18 +83,30 @@ class AnyMap {
   double omega() const { return valid() ? geometry().omega : 0.0; }
   const MapGeometry& geometry() const;
 
-  // One sample (copy 0 for radial4; a single candidate for gamito and tabulated). `iterations`
-  // receives the Newton iterations of the maps that solve for a root (else it is set to 0).
+  // One sample of the whole ellipse (for radial4: the radial map; a single candidate for gamito
+  // and tabulated). `iterations` receives the Newton iterations of the maps that solve for a
+  // root (else it is set to 0).
   EllipseSample sample(Point2 u, int* iterations = nullptr) const;
-  // All copies of u into out[0..copies()-1]; returns copies().
+  // All copies of u into out[0..copies()-1]; returns copies(). radial4: the four reflections of
+  // one first-quadrant sample (one root solve); the others: sample(u).
   int sample_copies(Point2 u, std::array<EllipseSample, 4>& out, int* iterations = nullptr) const;
 
+  // Solid-angle density of `direction` (any non-zero length) as sample() would report it: 1/Omega
+  // inside for the uniform maps, area's converted density, the proposal density for gamito and
+  // tabulated (their single candidates), 0 where the direction misses the disk. The uniform
+  // maps and area integrate to 1 over the sphere, gamito and tabulated to their acceptance rate.
+  // What multiple importance sampling needs (pbrt-v4's Disk::PDF(ctx, wi)).
+  double pdf(const Vec3& direction) const;
+
   // Whether the ray from the point along `direction` (any length) meets the disk: inside the
-  // spherical ellipse, z_e > 0 and (x/a_t)^2 + (y/b_t)^2 <= z^2 (its gnomonic image is the
-  // tangent ellipse), with the slack kRimSlack + 16 eps / b_t.
-  bool contains(const Vec3& direction) const;
-  // Direction -> u (see the header comment for when it returns nothing).
+  // spherical ellipse (MapGeometry::contains).
+  bool contains(const Vec3& direction) const { return geometry().contains(direction); }
+  // Direction -> u with sample(u) in that direction (see the header comment for when it returns
+  // nothing).
   std::optional<Point2> invert(const Vec3& direction) const;
+  // For sample_copies: the u of which the direction is a copy, and which copy (radial4: its
+  // quadrant k counter-clockwise from +x_e; the others: invert(), copy 0).
+  std::optional<Point2> invert_copy(const Vec3& direction, int* copy = nullptr) const;
 
   // The concrete sampler, for what the common interface does not cover (e.g. gamito's
   // loop-until-accepted sample(u, rng)).

@@ -21,7 +21,7 @@ struct AreaSampler {
   Vec3 center_local = Vec3::UnitZ();            // R_e^T (c - o)
   double inv_area = 0.0;
 
-  static AreaSampler make(const Disk& disk, const Vec3& o) {
+  static AreaSampler make(const Disk& disk, const Vec3& o) noexcept {
     AreaSampler s;
     s.g = MapGeometry::make(disk, o);
     if (s.g.empty) return s;
@@ -50,13 +50,13 @@ struct AreaSampler {
     return out;
   }
 
-  // Solid-angle density of a direction (0 outside the disk).
+  // Solid-angle density of a direction: |o - x|^2 / (A |cos theta_l|) where it meets the disk,
+  // 0 where it misses.
   double pdf(const Vec3& direction) const {
-    if (g.empty) return 0.0;
-    const Vec3 x = g.hit(direction);
-    if ((x - g.center).squaredNorm() > g.radius * g.radius * (1.0 + 1e-12)) return 0.0;
-    const double cos_light = std::abs(direction.normalized().dot(g.normal));
-    return cos_light > 0.0 ? (x - g.origin).squaredNorm() * inv_area / cos_light : 0.0;
+    if (!g.contains(direction)) return 0.0;
+    const Vec3 d = direction.normalized();
+    const double cos_light = std::abs(d.dot(g.normal));
+    return cos_light > 0.0 ? (g.hit(d) - g.origin).squaredNorm() * inv_area / cos_light : 0.0;
   }
 
   // Direction -> (u, v) through the disk point and the inverse concentric map.

@@ -30,10 +30,10 @@ inline constexpr int kGamitoMaxTries = 1024;
 struct GamitoSampler {
   MapGeometry g;
   SphericalRectangle rect;
-  double pdf = 0.0;           // 1/Omega, density of accepted samples
+  double uniform_pdf = 0.0;   // 1/Omega, density of accepted samples
   double proposal_pdf = 0.0;  // 1/S, density of candidates
 
-  static GamitoSampler make(const Disk& disk, const Vec3& o) {
+  static GamitoSampler make(const Disk& disk, const Vec3& o) noexcept {
     GamitoSampler s;
     s.g = MapGeometry::make(disk, o);
     if (s.g.empty) return s;
@@ -44,7 +44,7 @@ struct GamitoSampler {
       s.g.empty = true;
       return s;
     }
-    s.pdf = 1.0 / s.g.omega;
+    s.uniform_pdf = 1.0 / s.g.omega;
     s.proposal_pdf = 1.0 / s.rect.S;
     return s;
   }
@@ -53,7 +53,7 @@ struct GamitoSampler {
   // One candidate; valid == accepted; pdf is the proposal density.
   EllipseSample propose(Point2 u) const {
     if (g.empty) return {};
-    const Vec3 p = rect.sample_point(u.x, u.y);
+    const Vec3 p = rect.sample_point(g.origin, u.x, u.y);
     EllipseSample out;
     out.point = p;
     const Vec3 d = p - g.origin;
@@ -66,6 +66,11 @@ struct GamitoSampler {
     return out;
   }
 
+  // Density of a direction as an accepted candidate of propose(): the proposal density inside the
+  // disk's solid angle, 0 outside (it integrates to the acceptance rate Omega / S). For
+  // sample(u, rng) the density is uniform_pdf inside.
+  double pdf(const Vec3& direction) const { return g.contains(direction) ? proposal_pdf : 0.0; }
+
   // Loops until a candidate is accepted; pdf = 1/Omega. `tries` receives the candidates used.
   EllipseSample sample(Point2 u, sequence::Pcg32& rng, int* tries = nullptr) const {
     if (g.empty) return {};
@@ -74,7 +79,7 @@ struct GamitoSampler {
       EllipseSample s = propose(v);
       if (s.valid) {
         if (tries) *tries = i;
-        s.pdf = pdf;
+        s.pdf = uniform_pdf;
         return s;
       }
       v = {rng.next_double(), rng.next_double()};

@@ -19,11 +19,11 @@ namespace disklab::ellipse {
 struct LdRadialMap {
   RadialMap radial;
 
-  static LdRadialMap make(const Disk& disk, const Vec3& o) {
+  static LdRadialMap make(const Disk& disk, const Vec3& o) noexcept {
     return LdRadialMap{RadialMap::make(disk, o)};
   }
   bool valid() const { return radial.valid(); }
-  double pdf() const { return radial.pdf; }
+  double pdf(const Vec3& direction) const { return radial.pdf(direction); }
 
   // Square -> the radial map's (eps1, eps2), eq. (23).
   static Point2 to_radial(Point2 u) {

@@ -10,6 +10,7 @@
 // related by tan vphi = (cos(beta)/cos(alpha)) tan s, one atan2.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <Eigen/Geometry>
 
@@ -19,6 +20,12 @@
 #include "disklab/types.h"
 
 namespace disklab::ellipse {
+
+// A direction within this relative slack of the rim counts as inside (contains()): directions
+// read back from %.17g text, or produced on the rim (eps2 = 1), lie within a few ulps of it.
+// The local-frame coordinates of a unit world direction carry an absolute error ~eps, i.e. a
+// relative error ~eps / b_t in the thin direction, which contains() adds to this slack.
+inline constexpr double kRimSlack = 1e-9;
 
 // The shape, frame and solid angle once (the SphericalEllipse base), plus the few derived numbers
 // the root solves read on every sample.
@@ -66,6 +73,21 @@ struct MapGeometry : SphericalEllipse {
   // h_p(phi_p), eq. (9), and Omega_p^+(phi_p), eqs. (8)/(11), phi_p in [0, beta].
   double hp(double phi_p) const { return h_p(*this, phi_p); }
   double parallel_half(double phi_p) const { return parallel_half_sector(*this, phi_p); }
+
+  // Whether the ray from o along `direction` (any length) meets the disk: inside the spherical
+  // ellipse, z_e > 0 and (x/a_t)^2 + (y/b_t)^2 <= z^2 (its gnomonic image is the tangent
+  // ellipse), with the slack kRimSlack + 16 eps / b_t.
+  bool contains(const Vec3& direction) const {
+    if (empty || !direction.allFinite()) return false;
+    const double len = direction.norm();
+    if (!(len > 0.0)) return false;
+    const Vec3 l = to_local(direction / len);
+    if (!(l.z() > 0.0)) return false;
+    const double slack =
+        1.0 + kRimSlack + 16.0 * std::numeric_limits<double>::epsilon() / std::min(b_t, a_t);
+    const double qx = l.x() / a_t, qy = l.y() / b_t;
+    return qx * qx + qy * qy <= l.z() * l.z() * slack * slack;
+  }
 
   // Where the ray from o along `dir` meets the disk plane.
   Vec3 hit(const Vec3& dir) const {

@@ -22,10 +22,10 @@ inline constexpr double kParallelNewtonTol = 1e-15;
 
 struct ParallelMap {
   MapGeometry g;
-  double half = 0.0;  // Omega_p^+(beta), by the same function as Omega_p^+(phi_p)
-  double pdf = 0.0;
+  double uniform_pdf = 0.0;  // 1/Omega
   // Omega_p^+(varphi) as a sine series (radial.h's RadialSeries, beyond the paper), used by the
-  // root solve and the inverse when available (series.n > 0; then series.quadrant replaces half).
+  // root solve and the inverse when available (series.n > 0). Its `quadrant` holds the half
+  // Omega_p^+(beta) either way: the series' value, or solid_angle.h's when n == 0.
   // The integrand dOmega_p^+/dvarphi = 2 c_t b_t cos^2 v / (Delta (1 + b_t^2 sin^2 v)),
   // Delta^2 = 1 - m sin^2 v, is a function of x = cos 2v with singularities at
   // x = -(1 + 2 (1 - m)/m) (Delta = 0) and x = 1 + 2 / b_t^2: the nearer one sets the decay.
@@ -45,23 +45,24 @@ struct ParallelMap {
     });
   }
   bool use_series() const { return series.n > 0; }
-  double half_total() const { return use_series() ? series.quadrant : half; }
+  double half_total() const { return series.quadrant; }
   // Omega_p^+(varphi) from v, cos v, sin v.
   double half_sector(double v, double cv, double sv) const {
     return use_series() ? series.omega(v, cv, sv) : parallel_half_sector_parametric(g, v);
   }
 
-  static ParallelMap make(const Disk& disk, const Vec3& o) {
+  static ParallelMap make(const Disk& disk, const Vec3& o) noexcept {
     ParallelMap m;
     m.g = MapGeometry::make(disk, o);
     if (m.g.empty) return m;
-    m.half = parallel_half_sector_parametric(m.g, math::kHalfPi);
-    if (!(m.half > 0.0)) {
+    const double half = parallel_half_sector_parametric(m.g, math::kHalfPi);
+    if (!(half > 0.0)) {
       m.g.empty = true;
       return m;
     }
-    m.pdf = 1.0 / m.g.omega;
+    m.uniform_pdf = 1.0 / m.g.omega;
     m.series = make_series(m.g);
+    if (!m.use_series()) m.series.quadrant = half;
     return m;
   }
   bool valid() const { return !g.empty; }
@@ -89,7 +90,7 @@ struct ParallelMap {
     // clamped Newton steps on that cheap function (no elliptic integrals) solve it to ~1 ulp.
     // With the series, the model keeps its first harmonic instead, F(v) = (v + r sin 2v)/(pi/2),
     // r = b_1/a_0 (= 1/2 in the far field), which is closer for near disks.
-    const double r1 = use_series() ? series.b[1] / series.a0 : 0.5;
+    const double r1 = use_series() ? series.b[0] / series.a0 : 0.5;
     double v0 =
         f > 0.5 ? math::kHalfPi - std::cbrt(0.75 * math::kPi * (1.0 - f)) : 0.25 * math::kPi * f;
     for (int i = 0; i < 4; ++i) {
@@ -117,8 +118,10 @@ struct ParallelMap {
     const double h = (2.0 * e2 - 1.0) * h_p_parametric(g, v);  // eq. (14)
     const double rho = std::sqrt(std::max(0.0, (1.0 - h) * (1.0 + h)));
     const Vec3 local(h, rho * std::sin(phi_p), rho * std::cos(phi_p));  // eq. (15)
-    return finish_sample(g, local, pdf);
+    return finish_sample(g, local, uniform_pdf);
   }
+  // Solid-angle density of a direction: 1/Omega inside the disk's solid angle, 0 outside.
+  double pdf(const Vec3& direction) const { return g.contains(direction) ? uniform_pdf : 0.0; }
 
   // Direction -> (eps1, eps2), no root finding.
   Point2 invert_local(const Vec3& l) const {

@@ -16,6 +16,7 @@
 #include <cmath>
 
 #include "disklab/ellipse/map_geometry.h"
+#include "disklab/ellipse/radial_series.h"
 #include "disklab/ellipse/sampler.h"
 #include "disklab/math/constants.h"
 #include "disklab/math/roots.h"
@@ -28,144 +29,6 @@ inline constexpr double kRadialNewtonTol = 1e-15;
 // Evaluation cap of the root solves (as math::safeguarded_newton's): never reached in practice,
 // the bisection fallback halves the bracket each time.
 inline constexpr int kRadialMaxEvaluations = 64;
-
-// Omega_r(s) as a short trigonometric series, built once per shading point (the hot path of the
-// exact maps; beyond the paper). In the parametric angle s the integrand of eq. (16) is
-//     dOmega_r/ds = a b / (1 + h_r(s)),  h_r^2 = A cos^2 s + B sin^2 s = p + q cos 2s,
-// A = cos^2 alpha <= B = cos^2 beta, p = (A + B)/2, q = -(a^2 - b^2)/2. As a function of
-// x = cos 2s it is analytic on [-1, 1] except for the branch point x* = -p/q = (A + B)/(a^2 - b^2)
-// > 1, so its Chebyshev coefficients a_k decay like rho^-k, rho = x* + sqrt(x*^2 - 1) (Bernstein
-// ellipse), and integrating term by term gives
-//     Omega_r(s) = a_0 s + sum_k a_k sin(2 k s) / (2 k),   Omega_r(pi/2) = a_0 pi / 2,
-// with every term O(ab): no cancellation at any distance. The degree N (8..64) is the smallest
-// with rho^-N <= 2^-60, so truncation and aliasing stay below ~1e-18 relative to a_0 (the
-// coefficients are sampled exactly by a DCT-I on N + 1 Chebyshev-Lobatto nodes). Near disks with
-// rho^-64 > 2^-60 (the point close to the disk's rim plane, h_r -> 0 somewhere) get n == 0 and
-// the maps fall back to the elliptic-integral form of solid_angle.h.
-struct RadialSeries {
-  static constexpr int kMaxDegree = 64;
-  // Relative size of the dropped tail: 1e-17, a tenth of the rounding of the sum itself.
-  static constexpr double kSeriesDrop = 1e-17;
-  int n = 0;                      // degree; 0: not available, use solid_angle.h
-  double a0 = 0.0;                // mean of the integrand (constant term)
-  double quadrant = 0.0;          // a_0 pi / 2
-  double b[kMaxDegree + 1] = {};  // b_k = a_k / (2k), k = 1..n
-
-  static RadialSeries make(const MapGeometry& g) {
-    if (g.empty) return {};
-    const double A = g.one_minus_a2, B = g.one_minus_b2;
-    const double diff = g.a2_minus_b2;  // B - A = a^2 - b^2
-    const double ab = g.a * g.b;
-    // log rho = acosh(x*), x* - 1 = 2A / (B - A).
-    const double log_rho = diff > 0.0 ? acosh1p(2.0 * A / diff) : HUGE_VAL;
-    // The DCT runs on dg_j = g_j - g_0, formed without cancellation (h_0 = cos(alpha)):
-    //   g_j - g_0 = -a b (B - A) sin^2 s_j / ((h_0 + h_j)(1 + h_0)(1 + h_j)),
-    // so the coefficients k >= 1 (where the constant g_0 contributes exactly nothing) carry
-    // rounding relative to their own size, not to a b: for distant disks they are O(a^2 - b^2)
-    // and would otherwise drown in the rounding of g_j.
-    const double h0 = g.cos_alpha, g0 = ab / (1.0 + h0);
-    return fit(log_rho, g0, [&](double c2, double s2) {
-      const double hj = std::sqrt(A * c2 + B * s2);
-      return -ab * diff * s2 / ((h0 + hj) * (1.0 + h0) * (1.0 + hj));
-    });
-  }
-
-  // acosh(1 + e) for e >= 0 without cancellation.
-  static double acosh1p(double e) { return std::log1p(e + std::sqrt(e * (2.0 + e))); }
-
-  // The series of int_0^s G(cos 2s') ds' for an integrand whose Chebyshev coefficients decay at
-  // least like exp(-k log_rho): degree N (8..64) with N log_rho >= 60 log 2 (n = 0 if none
-  // suffices), coefficients by a DCT-I on N + 1 Chebyshev-Lobatto nodes s_j = j pi / (2N) of
-  // dg(cos^2 s_j, sin^2 s_j) = G_j - g0 (g0 = G at s = 0), trailing terms dropped.
-  template <class DG>
-  static RadialSeries fit(double log_rho, double g0, DG&& dg_at) {
-    RadialSeries out;
-    const double need = 60.0 * 0.6931471805599453 / log_rho;
-    if (!(need <= kMaxDegree) || !std::isfinite(g0)) return out;
-    int n = 8;
-    while (n < need)
-      n *= 2;
-    const auto& tab = tables();
-    const int step = kMaxDegree / n;  // table stride for this degree
-    double dg[kMaxDegree + 1];
-    for (int j = 0; j <= n; ++j)
-      dg[j] = dg_at(tab.cos2_half[j * step], tab.sin2_half[j * step]);
-    // DCT-I: a_k = (2/n) sum'' dg_j cos(j k pi / n); a_0 and a_n halved once more. For k >= 1
-    // the constant g0 contributes sum'' cos(j k pi / n) = 0.
-    double coef[kMaxDegree + 1];
-    for (int k = 0; k <= n; ++k) {
-      double sum = 0.5 * (dg[0] + ((k & 1) ? -dg[n] : dg[n]));
-      // cos(j k pi / n) from the table at index (j k mod 2n) * step, kept by increments (no
-      // integer division in the O(n^2) loop).
-      // Four partial sums: the loop is bound by the latency of the additions, not their count.
-      const int wrap = 2 * kMaxDegree, inc = (k * step) % wrap;
-      int idx = 0;
-      double part[4] = {0.0, 0.0, 0.0, 0.0};
-      for (int j = 1; j < n; ++j) {
-        idx += inc;
-        if (idx >= wrap) idx -= wrap;
-        part[j & 3] += dg[j] * tab.cos_pi[idx];
-      }
-      sum += (part[0] + part[1]) + (part[2] + part[3]);
-      coef[k] = sum * (2.0 / n);
-    }
-    coef[0] = g0 + 0.5 * coef[0];
-    coef[n] *= 0.5;
-    out.n = n;
-    out.a0 = coef[0];
-    for (int k = 1; k <= n; ++k)
-      out.b[k] = coef[k] / (2.0 * k);
-    out.quadrant = out.a0 * math::kHalfPi;
-    // Drop the trailing terms whose sum stays below kSeriesDrop * quadrant (|sin| <= 1 bounds
-    // their contribution): N was sized for the worst decay, most ellipses need fewer terms.
-    double tail = 0.0;
-    while (out.n > 1 && tail + std::abs(out.b[out.n]) <= kSeriesDrop * out.quadrant) {
-      tail += std::abs(out.b[out.n]);
-      out.b[out.n--] = 0.0;
-    }
-    for (int k = 1; k <= out.n; ++k)
-      if (!std::isfinite(out.b[k])) return {};
-    if (!(out.quadrant > 0.0) || !std::isfinite(out.quadrant)) return {};
-    return out;
-  }
-
-  // Omega_r(s) from cos s and sin s (and s itself): Clenshaw's recurrence for the sine series in
-  // theta = 2s. Near theta = 0 or pi the recurrence's rounding is multiplied by sin(theta), as
-  // the sum itself, so the relative accuracy of a_0 s + sum holds there too.
-  double omega(double s, double cs, double ss) const {
-    const double cos2 = (cs - ss) * (cs + ss), sin2 = 2.0 * ss * cs;
-    const double two_c = 2.0 * cos2;
-    double y1 = 0.0, y2 = 0.0;
-    for (int k = n; k >= 1; --k) {
-      const double y = b[k] + two_c * y1 - y2;
-      y2 = y1;
-      y1 = y;
-    }
-    return a0 * s + y1 * sin2;
-  }
-
- private:
-  struct Tables {
-    double cos_pi[2 * kMaxDegree];     // cos(m pi / 64), m = 0..127
-    double cos2_half[kMaxDegree + 1];  // cos^2(j pi / 128), j = 0..64
-    double sin2_half[kMaxDegree + 1];  // sin^2(j pi / 128)
-  };
-  static const Tables& tables() {
-    static const Tables t = [] {
-      Tables r;
-      for (int m = 0; m < 2 * kMaxDegree; ++m)
-        r.cos_pi[m] = std::cos(m * math::kPi / kMaxDegree);
-      for (int j = 0; j <= kMaxDegree; ++j) {
-        const double c = std::cos(j * math::kHalfPi / kMaxDegree);
-        const double sn = std::sin(j * math::kHalfPi / kMaxDegree);
-        r.cos2_half[j] = c * c;
-        r.sin2_half[j] = sn * sn;
-      }
-      return r;
-    }();
-    return t;
-  }
-};
 
 // Quadrant-local part of the radial map, shared by radial, ld-radial, radial4 and radial-fast.
 struct RadialQuadrant {
@@ -210,9 +73,7 @@ struct RadialQuadrant {
   }
 
   // A solved parametric angle with its cosine and sine (local_point needs no second sincos).
-  struct Angle {
-    double s, cs, ss;
-  };
+  using Angle = ParametricAngle;
 
   // solve_s with the series (when available) and a Newton loop that skips the confirming
   // evaluation when it can prove it unnecessary: after a step delta from s the residual is
@@ -223,8 +84,13 @@ struct RadialQuadrant {
   // Same bracket and bisection fallback as math::safeguarded_newton; `iterations` counts
   // evaluations of Omega_r.
   Angle solve(double t, int* iterations = nullptr, double s0 = -1.0) const {
+    const double s = (s0 >= 0.0 && s0 <= math::kHalfPi) ? s0 : t * math::kHalfPi;
+    return solve_from(t, {s, std::cos(s), std::sin(s)}, iterations);
+  }
+  // The same from a start with its cosine and sine already known (radial-fast's seed).
+  Angle solve_from(double t, Angle start, int* iterations = nullptr) const {
     if (!use_series()) {
-      const double s = solve_s(t, iterations, s0);
+      const double s = solve_s(t, iterations, start.s);
       return {s, std::cos(s), std::sin(s)};
     }
     if (iterations) *iterations = 0;
@@ -237,8 +103,12 @@ struct RadialQuadrant {
     const double h_min = g->cos_alpha;
     const double curvature = ab * diff / (h_min * (1.0 + h_min) * (1.0 + h_min));
     double lo = 0.0, hi = math::kHalfPi;
-    double s = (s0 >= 0.0 && s0 <= math::kHalfPi) ? s0 : t * math::kHalfPi;
-    double cs = std::cos(s), ss = std::sin(s);
+    if (!(start.s >= 0.0 && start.s <= math::kHalfPi)) {
+      start.s = t * math::kHalfPi;
+      start.cs = std::cos(start.s);
+      start.ss = std::sin(start.s);
+    }
+    double s = start.s, cs = start.cs, ss = start.ss;
     for (int it = 1; it <= kRadialMaxEvaluations; ++it) {
       const double h = std::sqrt(std::max(0.0, A * cs * cs + B * ss * ss));
       const double d1 = ab / (1.0 + h);
@@ -338,12 +208,12 @@ inline double join_quadrant(int k, double t_folded) {
 struct RadialMap {
   MapGeometry g;
   RadialSeries series;  // Omega_r(s) for the root solves (falls back to solid_angle.h if n == 0)
-  double pdf = 0.0;
+  double uniform_pdf = 0.0;  // 1/Omega
 
-  static RadialMap make(const Disk& disk, const Vec3& o) {
+  static RadialMap make(const Disk& disk, const Vec3& o) noexcept {
     RadialMap m;
     m.g = MapGeometry::make(disk, o);
-    m.pdf = m.g.empty ? 0.0 : 1.0 / m.g.omega;
+    m.uniform_pdf = m.g.empty ? 0.0 : 1.0 / m.g.omega;
     m.series = RadialSeries::make(m.g);
     return m;
   }
@@ -356,8 +226,10 @@ struct RadialMap {
     const int k = split_quadrant(u.x, t);
     const RadialQuadrant q = quadrant();
     return finish_sample(g, q.local_point(k, q.solve(t, iterations), std::clamp(u.y, 0.0, 1.0)),
-                         pdf);
+                         uniform_pdf);
   }
+  // Solid-angle density of a direction: 1/Omega inside the disk's solid angle, 0 outside.
+  double pdf(const Vec3& direction) const { return g.contains(direction) ? uniform_pdf : 0.0; }
 
   // Direction -> (eps1, eps2); no root finding (eq. 19 evaluated forwards).
   Point2 invert_local(const Vec3& l) const {

@@ -4,7 +4,8 @@
 // each square sample is mapped into the first quadrant (eps1 = the quadrant's cumulative
 // fraction, eps2 as in radial.h) and reused in all four quadrants through the reflections
 // (x, y) -> (+-x, +-y). Each of the four directions has pdf 1/Omega; one root solve serves four
-// samples.
+// samples (sample4). A single sample (sample) is a full-ellipse one: the radial map itself, so an
+// estimator that draws one direction per u stays unbiased.
 #include <array>
 
 #include "disklab/ellipse/radial.h"
@@ -14,18 +15,26 @@ namespace disklab::ellipse {
 struct Radial4Map {
   RadialMap radial;
 
-  static Radial4Map make(const Disk& disk, const Vec3& o) {
+  static Radial4Map make(const Disk& disk, const Vec3& o) noexcept {
     return Radial4Map{RadialMap::make(disk, o)};
   }
   bool valid() const { return radial.valid(); }
-  double pdf() const { return radial.pdf; }
+  double pdf(const Vec3& direction) const { return radial.pdf(direction); }
+
+  // One full-ellipse sample and its inverse (the radial map's).
+  EllipseSample sample(Point2 u, int* iterations = nullptr) const {
+    return radial.sample(u, iterations);
+  }
+  Point2 invert_local(const Vec3& l) const { return radial.invert_local(l); }
+  Point2 invert(const Vec3& direction) const { return radial.invert(direction); }
 
   // The first-quadrant point of u (the map [0,1]^2 -> quadrant 0, measure Omega/4).
   EllipseSample sample_quadrant(Point2 u, int* iterations = nullptr) const {
     if (!radial.valid()) return {};
     const RadialQuadrant q = radial.quadrant();
     const RadialQuadrant::Angle s = q.solve(std::clamp(u.x, 0.0, 1.0), iterations);
-    return finish_sample(radial.g, q.local_point(0, s, std::clamp(u.y, 0.0, 1.0)), radial.pdf);
+    return finish_sample(radial.g, q.local_point(0, s, std::clamp(u.y, 0.0, 1.0)),
+                         radial.uniform_pdf);
   }
 
   // The four reflections of sample_quadrant(u), counter-clockwise from quadrant 0.
@@ -38,16 +47,15 @@ struct Radial4Map {
                                         Vec3(l.x(), -l.y(), l.z())};
     out[0] = s0;
     for (int k = 1; k < 4; ++k)
-      out[k] = finish_sample(radial.g, locals[k], radial.pdf);
+      out[k] = finish_sample(radial.g, locals[k], radial.uniform_pdf);
     return out;
   }
 
-  // Inverse of sample_quadrant for a direction in any quadrant (folded into the first).
-  Point2 invert_local(const Vec3& l) const {
-    int k;
-    return radial.quadrant().invert_local(Vec3(std::abs(l.x()), std::abs(l.y()), l.z()), k);
+  // Inverse of sample4: the u of which a direction (any quadrant) is a copy, and which copy
+  // (its quadrant k, counter-clockwise from +x_e).
+  Point2 invert_copy_local(const Vec3& l, int& k) const {
+    return radial.quadrant().invert_local(l, k);  // folds |x|, |y| and reports the quadrant
   }
-  Point2 invert(const Vec3& direction) const { return invert_local(radial.g.to_local(direction)); }
 };
 
 }  // namespace disklab::ellipse

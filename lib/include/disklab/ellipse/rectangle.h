@@ -16,8 +16,7 @@
 namespace disklab::ellipse {
 
 struct SphericalRectangle {
-  Vec3 o = Vec3::Zero();
-  Vec3 x = Vec3::UnitX(), y = Vec3::UnitY(), z = Vec3::UnitZ();  // local frame
+  Vec3 x = Vec3::UnitX(), y = Vec3::UnitY(), z = Vec3::UnitZ();  // local frame (origin at o)
   double z0 = 0.0, x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0;
   double b0 = 0.0, b1 = 0.0, k = 0.0;
   double S = 0.0;  // solid angle of the rectangle seen from o
@@ -26,7 +25,6 @@ struct SphericalRectangle {
   // Rectangle with corner s and edges ex, ey (orthogonal), seen from o.
   static SphericalRectangle make(const Vec3& o, const Vec3& s, const Vec3& ex, const Vec3& ey) {
     SphericalRectangle q;
-    q.o = o;
     const double exl = ex.norm(), eyl = ey.norm();
     if (!(exl > 0.0) || !(eyl > 0.0) || !std::isfinite(exl) || !std::isfinite(eyl)) return q;
     q.x = ex / exl;
@@ -63,8 +61,9 @@ struct SphericalRectangle {
     return q;
   }
 
-  // The point on the rectangle for (u, v) in [0,1]^2; uniform in solid angle.
-  Vec3 sample_point(double u, double v) const {
+  // The point on the rectangle for (u, v) in [0,1]^2, uniform in solid angle from o (the
+  // point the rectangle was made for).
+  Vec3 sample_point(const Vec3& o, double u, double v) const {
     const double au = u * S + k;
     const double fu = (std::cos(au) * b0 - b1) / std::sin(au);
     double cu = (fu > 0.0 ? 1.0 : -1.0) / std::sqrt(fu * fu + b0 * b0);

@@ -102,6 +102,33 @@ struct TabulatedMap {
     return out;
   }
 
+  // The table cell j of a first-quadrant azimuth: phi_at(j) <= phi < phi_at(j + 1) (binary
+  // search).
+  int cell_of(double phi) const {
+    int lo = 0, hi = table->n_eps;
+    while (hi - lo > 1) {
+      const int mid = (lo + hi) / 2;
+      if (phi_at(mid) <= phi)
+        lo = mid;
+      else
+        hi = mid;
+    }
+    return lo;
+  }
+
+  // Density of a direction as an accepted candidate: the proposal density of its cell inside the
+  // disk's solid angle, 0 outside (it integrates to the acceptance rate). The biased variant
+  // reports 1/Omega, as its samples do.
+  double pdf(const Vec3& direction) const {
+    if (!g.contains(direction)) return 0.0;
+    if (biased) return pdf_uniform;
+    const Vec3 l = g.to_local(direction.normalized());
+    const int j = cell_of(std::atan2(std::abs(l.y()), std::abs(l.x())));
+    const double proposal =
+        1.0 / (4.0 * table->n_eps * (phi_at(j + 1) - phi_at(j)) * g.one_minus_hr(phi_at(j)));
+    return proposal < HUGE_VAL ? proposal : 0.0;
+  }
+
   // Direction -> (eps1, eps2) of this table (binary search of the cell; no root finding).
   Point2 invert_local(const Vec3& l) const {
     if (g.empty) return {};
@@ -110,14 +137,7 @@ struct TabulatedMap {
     const int k = down ? (left ? 2 : 3) : (left ? 1 : 0);
     const double phi = std::atan2(std::abs(y), std::abs(x));
     const int n = table->n_eps;
-    int lo = 0, hi = n;  // phi_at(lo) <= phi < phi_at(hi)
-    while (hi - lo > 1) {
-      const int mid = (lo + hi) / 2;
-      if (phi_at(mid) <= phi)
-        lo = mid;
-      else
-        hi = mid;
-    }
+    const int lo = cell_of(phi);
     const double dphi = phi_at(lo + 1) - phi_at(lo);
     const double f = dphi > 0.0 ? std::clamp((phi - phi_at(lo)) / dphi, 0.0, 1.0) : 0.0;
     const double omh = (x * x + y * y) / (1.0 + std::max(0.0, l.z()));

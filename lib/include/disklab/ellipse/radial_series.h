@@ -1,0 +1,204 @@
+#pragma once
+// Per-shading-point sine series of the radial and parallel maps' cumulative solid angles (beyond
+// Guillén et al. 2017): the hot path of the exact maps, and the seed of radial-fast.
+#include <algorithm>
+#include <cmath>
+
+#include "disklab/ellipse/map_geometry.h"
+#include "disklab/math/constants.h"
+
+namespace disklab::ellipse {
+
+// A parametric angle s of the radial maps with its cosine and sine (computed once, used twice).
+struct ParametricAngle {
+  double s, cs, ss;
+};
+
+// Omega_r(s) as a short trigonometric series, built once per shading point (the hot path of the
+// exact maps; beyond the paper). In the parametric angle s the integrand of eq. (16) is
+//     dOmega_r/ds = a b / (1 + h_r(s)),  h_r^2 = A cos^2 s + B sin^2 s = p + q cos 2s,
+// A = cos^2 alpha <= B = cos^2 beta, p = (A + B)/2, q = -(a^2 - b^2)/2. As a function of
+// x = cos 2s it is analytic on [-1, 1] except for the branch point x* = -p/q = (A + B)/(a^2 - b^2)
+// > 1, so its Chebyshev coefficients a_k decay like rho^-k, rho = x* + sqrt(x*^2 - 1) (Bernstein
+// ellipse), and integrating term by term gives
+//     Omega_r(s) = a_0 s + sum_k a_k sin(2 k s) / (2 k),   Omega_r(pi/2) = a_0 pi / 2,
+// with every term O(ab): no cancellation at any distance. The degree N (8..64) is the smallest
+// with rho^-N <= 2^-60, so truncation and aliasing stay below ~1e-18 relative to a_0 (the
+// coefficients are sampled exactly by a DCT-I on N + 1 Chebyshev-Lobatto nodes). Trailing terms
+// that do not matter are dropped, and at most kCapacity terms are kept (the sampler stays small
+// without allocating): near disks that need more (the point close to the disk's rim plane, h_r
+// -> 0 somewhere) get n == 0 and the maps fall back to the elliptic-integral form of
+// solid_angle.h.
+//
+// The capacity the series leaves free may hold a second, shorter series: a seed of the radial
+// map's inverse s(t), set by radial-fast (radial_fast.h) and read by seed().
+struct RadialSeries {
+  static constexpr int kMaxDegree = 64;
+  // Terms kept per shading point: 17 holds 99% of the radial series of disks from 1e-3 to 1e4
+  // radii in random directions (`ellipse.RadialSeries` prints the distribution), and keeps the
+  // largest sampler of any_map.h under 512 bytes.
+  static constexpr int kCapacity = 17;
+  // Relative size of the dropped tail: 1e-17, a tenth of the rounding of the sum itself.
+  static constexpr double kSeriesDrop = 1e-17;
+  int n = 0;                 // terms of Omega_r's series; 0: not available, use solid_angle.h
+  int n_seed = 0;            // terms of the inverse map's seed, stored after them
+  double a0 = 0.0;           // mean of the integrand (constant term)
+  double quadrant = 0.0;     // a_0 pi / 2
+  double b[kCapacity] = {};  // b[k - 1] = a_k / (2k), k = 1..n; then the seed's c_1..c_n_seed
+
+  static RadialSeries make(const MapGeometry& g) {
+    if (g.empty) return {};
+    const double A = g.one_minus_a2, B = g.one_minus_b2;
+    const double diff = g.a2_minus_b2;  // B - A = a^2 - b^2
+    const double ab = g.a * g.b;
+    // log rho = acosh(x*), x* - 1 = 2A / (B - A).
+    const double log_rho = diff > 0.0 ? acosh1p(2.0 * A / diff) : HUGE_VAL;
+    // The DCT runs on dg_j = g_j - g_0, formed without cancellation (h_0 = cos(alpha)):
+    //   g_j - g_0 = -a b (B - A) sin^2 s_j / ((h_0 + h_j)(1 + h_0)(1 + h_j)),
+    // so the coefficients k >= 1 (where the constant g_0 contributes exactly nothing) carry
+    // rounding relative to their own size, not to a b: for distant disks they are O(a^2 - b^2)
+    // and would otherwise drown in the rounding of g_j.
+    const double h0 = g.cos_alpha, g0 = ab / (1.0 + h0);
+    return fit(log_rho, g0, [&](double c2, double s2) {
+      const double hj = std::sqrt(A * c2 + B * s2);
+      return -ab * diff * s2 / ((h0 + hj) * (1.0 + h0) * (1.0 + hj));
+    });
+  }
+
+  // acosh(1 + e) for e >= 0 without cancellation.
+  static double acosh1p(double e) { return std::log1p(e + std::sqrt(e * (2.0 + e))); }
+
+  // The series of int_0^s G(cos 2s') ds' for an integrand whose Chebyshev coefficients decay at
+  // least like exp(-k log_rho): degree N (8..64) with N log_rho >= 60 log 2 (n = 0 if none
+  // suffices), coefficients by a DCT-I on N + 1 Chebyshev-Lobatto nodes s_j = j pi / (2N) of
+  // dg(cos^2 s_j, sin^2 s_j) = G_j - g0 (g0 = G at s = 0), trailing terms dropped.
+  template <class DG>
+  static RadialSeries fit(double log_rho, double g0, DG&& dg_at) {
+    RadialSeries out;
+    const double need = 60.0 * 0.6931471805599453 / log_rho;
+    if (!(need <= kMaxDegree) || !std::isfinite(g0)) return out;
+    int n = 8;
+    while (n < need)
+      n *= 2;
+    const auto& tab = tables();
+    const int step = kMaxDegree / n;  // table stride for this degree
+    double dg[kMaxDegree + 1];
+    for (int j = 0; j <= n; ++j)
+      dg[j] = dg_at(tab.cos2_half[j * step], tab.sin2_half[j * step]);
+    // DCT-I: a_k = (2/n) sum'' dg_j cos(j k pi / n); a_0 and a_n halved once more. For k >= 1
+    // the constant g0 contributes sum'' cos(j k pi / n) = 0.
+    double coef[kMaxDegree + 1];
+    for (int k = 0; k <= n; ++k) {
+      double sum = 0.5 * (dg[0] + ((k & 1) ? -dg[n] : dg[n]));
+      // cos(j k pi / n) from the table at index (j k mod 2n) * step, kept by increments (no
+      // integer division in the O(n^2) loop).
+      // Four partial sums: the loop is bound by the latency of the additions, not their count.
+      const int wrap = 2 * kMaxDegree, inc = (k * step) % wrap;
+      int idx = 0;
+      double part[4] = {0.0, 0.0, 0.0, 0.0};
+      for (int j = 1; j < n; ++j) {
+        idx += inc;
+        if (idx >= wrap) idx -= wrap;
+        part[j & 3] += dg[j] * tab.cos_pi[idx];
+      }
+      sum += (part[0] + part[1]) + (part[2] + part[3]);
+      coef[k] = sum * (2.0 / n);
+    }
+    coef[0] = g0 + 0.5 * coef[0];
+    coef[n] *= 0.5;
+    double bk[kMaxDegree + 1];
+    for (int k = 1; k <= n; ++k)
+      bk[k] = coef[k] / (2.0 * k);
+    const double quadrant = coef[0] * math::kHalfPi;
+    // Drop the trailing terms whose sum stays below kSeriesDrop * quadrant (|sin| <= 1 bounds
+    // their contribution): N was sized for the worst decay, most ellipses need fewer terms.
+    double tail = 0.0;
+    while (n > 1 && tail + std::abs(bk[n]) <= kSeriesDrop * quadrant) {
+      tail += std::abs(bk[n]);
+      --n;
+    }
+    if (n > kCapacity) return out;
+    for (int k = 1; k <= n; ++k)
+      if (!std::isfinite(bk[k])) return out;
+    if (!(quadrant > 0.0) || !std::isfinite(quadrant)) return out;
+    out.n = n;
+    out.a0 = coef[0];
+    out.quadrant = quadrant;
+    for (int k = 1; k <= n; ++k)
+      out.b[k - 1] = bk[k];
+    return out;
+  }
+
+  // Omega_r(s) from cos s and sin s (and s itself): Clenshaw's recurrence for the sine series in
+  // theta = 2s. Near theta = 0 or pi the recurrence's rounding is multiplied by sin(theta), as
+  // the sum itself, so the relative accuracy of a_0 s + sum holds there too.
+  double omega(double s, double cs, double ss) const {
+    const double cos2 = (cs - ss) * (cs + ss), sin2 = 2.0 * ss * cs;
+    return a0 * s + sine_sum(b, n, cos2, sin2);
+  }
+
+  // sum_{k=1}^{count} c[k - 1] sin(2 k x) from cos 2x and sin 2x (Clenshaw).
+  static double sine_sum(const double* c, int count, double cos2, double sin2) {
+    const double two_c = 2.0 * cos2;
+    double y1 = 0.0, y2 = 0.0;
+    for (int k = count; k >= 1; --k) {
+      const double y = c[k - 1] + two_c * y1 - y2;
+      y2 = y1;
+      y1 = y;
+    }
+    return y1 * sin2;
+  }
+
+  // ---- the inverse map's seed (radial-fast) ----
+  // s(t) ~ tau + sum_k c_k sin(2 k tau), tau = t pi / 2: the radial map's parametric angle as a
+  // function of the quadrant fraction t (the planar ellipse's answer is s = tau exactly).
+  int seed_capacity() const { return kCapacity - n; }
+  // Stores c_1..c_count after Omega_r's terms; false (nothing stored) when they do not fit.
+  bool set_seed(const double* c, int count) {
+    if (count < 0 || count > seed_capacity()) return false;
+    for (int k = 0; k < count; ++k)
+      b[n + k] = c[k];
+    n_seed = count;
+    return true;
+  }
+  // The seed for t in [0, 1] with its cosine and sine, from one sincos of tau: s = tau + delta,
+  // cos and sin of s by the angle sum with delta's own cosine and sine (a Taylor polynomial
+  // while |delta| <= kSmallDelta, where its degree-7 remainder is below 1e-25).
+  static constexpr double kSmallDelta = 1e-3;
+  ParametricAngle seed(double t) const {
+    const double tau = t * math::kHalfPi;
+    const double ct = std::cos(tau), st = std::sin(tau);
+    if (n_seed == 0) return {tau, ct, st};
+    const double delta = sine_sum(b + n, n_seed, (ct - st) * (ct + st), 2.0 * st * ct);
+    const double s = tau + delta;
+    if (std::abs(delta) > kSmallDelta) return {s, std::cos(s), std::sin(s)};
+    const double d2 = delta * delta;
+    const double cd = 1.0 - d2 * (0.5 - d2 * (1.0 / 24.0 - d2 * (1.0 / 720.0)));
+    const double sd = delta * (1.0 - d2 * (1.0 / 6.0 - d2 * (1.0 / 120.0 - d2 * (1.0 / 5040.0))));
+    return {s, ct * cd - st * sd, st * cd + ct * sd};
+  }
+
+ private:
+  struct Tables {
+    double cos_pi[2 * kMaxDegree];     // cos(m pi / 64), m = 0..127
+    double cos2_half[kMaxDegree + 1];  // cos^2(j pi / 128), j = 0..64
+    double sin2_half[kMaxDegree + 1];  // sin^2(j pi / 128)
+  };
+  static const Tables& tables() {
+    static const Tables t = [] {
+      Tables r;
+      for (int m = 0; m < 2 * kMaxDegree; ++m)
+        r.cos_pi[m] = std::cos(m * math::kPi / kMaxDegree);
+      for (int j = 0; j <= kMaxDegree; ++j) {
+        const double c = std::cos(j * math::kHalfPi / kMaxDegree);
+        const double sn = std::sin(j * math::kHalfPi / kMaxDegree);
+        r.cos2_half[j] = c * c;
+        r.sin2_half[j] = sn * sn;
+      }
+      return r;
+    }();
+    return t;
+  }
+};
+
+}  // namespace disklab::ellipse
