@@ -75,14 +75,14 @@ struct RadialQuadrant {
   // A solved parametric angle with its cosine and sine (local_point needs no second sincos).
   using Angle = ParametricAngle;
 
-  // solve_s with the series (when available) and a Newton loop that skips the confirming
-  // evaluation when it can prove it unnecessary: after a step delta from s the residual is
+  // solve_s with the series (when available), skipping the confirming evaluation when a bound
+  // proves it unnecessary: after a step delta from s the residual is
   // Omega(s + delta) - target = (1/2) Omega''(xi) delta^2 exactly (Taylor; the linear part is
   // what the step cancels), so M delta^2 <= tol, with M >= max |Omega''| on the step, bounds it
   // by tol/2 without evaluating. Omega'' = -ab h_r' / (1 + h_r)^2, h_r' = (B - A) sin s cos s /
   // h_r, and |sin|, |cos| grow by at most |delta| over the step while h_r >= cos(alpha): M below.
-  // Same bracket and bisection fallback as math::safeguarded_newton; `iterations` counts
-  // evaluations of Omega_r.
+  // math::safeguarded_newton's bracket and bisection fallback; `iterations` counts evaluations
+  // of Omega_r.
   Angle solve(double t, int* iterations = nullptr, double s0 = -1.0) const {
     const double s = (s0 >= 0.0 && s0 <= math::kHalfPi) ? s0 : t * math::kHalfPi;
     return solve_from(t, {s, std::cos(s), std::sin(s)}, iterations);
@@ -102,46 +102,33 @@ struct RadialQuadrant {
     const double diff = g->a2_minus_b2;  // B - A
     const double h_min = g->cos_alpha;
     const double curvature = ab * diff / (h_min * (1.0 + h_min) * (1.0 + h_min));
-    double lo = 0.0, hi = math::kHalfPi;
     if (!(start.s >= 0.0 && start.s <= math::kHalfPi)) {
       start.s = t * math::kHalfPi;
       start.cs = std::cos(start.s);
       start.ss = std::sin(start.s);
     }
-    double s = start.s, cs = start.cs, ss = start.ss;
-    for (int it = 1; it <= kRadialMaxEvaluations; ++it) {
-      const double h = std::sqrt(std::max(0.0, A * cs * cs + B * ss * ss));
-      const double d1 = ab / (1.0 + h);
-      const double value = S.omega(s, cs, ss) - target;
-      if (iterations) *iterations = it;
-      if (!(std::abs(value) > tol)) return {s, cs, ss};
-      if (value < 0.0)
-        lo = s;
-      else
-        hi = s;
-      const double delta = -value / d1;
-      const double next = s + delta;
-      if (next > lo && next < hi) {
-        const double ad = std::abs(delta);
-        const double M = curvature * (std::abs(ss) + ad) * (std::abs(cs) + ad);
-        if (M * delta * delta <= tol) {
-          // Converged without another evaluation. For |delta| <= 1e-6 the sine and cosine follow
-          // from those at s by Taylor to second order (the cubic term, < 2e-19, is below rounding).
-          if (ad <= 1e-6) {
-            const double q = 0.5 * delta * delta;
-            return {next, cs - ss * delta - cs * q, ss + cs * delta - ss * q};
-          }
-          return {next, std::cos(next), std::sin(next)};
-        }
-        s = next;
-      } else {
-        s = 0.5 * (lo + hi);
-      }
-      cs = std::cos(s);
-      ss = std::sin(s);
-      if (!(lo < hi) || std::nextafter(lo, hi) >= hi) break;
+    Angle at = start;  // the last evaluated angle, with its cosine and sine
+    auto eval = [&](double s) {
+      if (s != at.s) at = {s, std::cos(s), std::sin(s)};
+      const double h = std::sqrt(std::max(0.0, A * at.cs * at.cs + B * at.ss * at.ss));
+      return std::pair<double, double>(S.omega(s, at.cs, at.ss) - target, ab / (1.0 + h));
+    };
+    auto final_step = [&](double, double delta) {
+      const double ad = std::abs(delta);
+      return curvature * (std::abs(at.ss) + ad) * (std::abs(at.cs) + ad) * delta * delta <= tol;
+    };
+    const math::RootResult root = math::safeguarded_newton(eval, 0.0, math::kHalfPi, start.s, tol,
+                                                           0.0, kRadialMaxEvaluations, final_step);
+    if (iterations) *iterations = root.iterations;
+    if (root.x == at.s) return at;
+    // One step past the last evaluation: for |delta| <= 1e-6 the sine and cosine follow from
+    // those at s by Taylor to second order (the cubic term, < 2e-19, is below rounding).
+    const double delta = root.x - at.s;
+    if (std::abs(delta) <= 1e-6) {
+      const double q = 0.5 * delta * delta;
+      return {root.x, at.cs - at.ss * delta - at.cs * q, at.ss + at.cs * delta - at.ss * q};
     }
-    return {s, cs, ss};
+    return {root.x, std::cos(root.x), std::sin(root.x)};
   }
 
   // Local-frame direction for quadrant k, parametric angle s and eps2 (eq. 22, reversed).

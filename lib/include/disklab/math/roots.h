@@ -17,6 +17,7 @@ struct RootResult {
   double x = 0.0;      // the root estimate, always inside the initial bracket
   int iterations = 0;  // evaluations of g performed
   bool converged = false;
+  bool stepped = false;  // x is one step past the last evaluation (not evaluated itself)
 };
 
 // Solves g(x) = 0 for g increasing on [lo, hi] with g(lo) <= 0 <= g(hi) (not checked: with a
@@ -24,9 +25,12 @@ struct RootResult {
 // `eval(x)` returns {g(x), g'(x)}. Stops when |g| <= f_tol, when the Newton step is below
 // x_tol, or when the bracket is down to adjacent doubles; after `max_iter` evaluations it
 // returns the best iterate with converged = false.
-template <class Eval>
+// `final_step(x, delta)`, asked after each evaluation at x whose Newton step x + delta stays in
+// the bracket, may declare that step final without evaluating at its end (e.g. by a bound on
+// the residual from the curvature): the result is then x + delta with stepped = true.
+template <class Eval, class FinalStep>
 RootResult safeguarded_newton(Eval&& eval, double lo, double hi, double x0, double f_tol,
-                              double x_tol, int max_iter = 64) {
+                              double x_tol, int max_iter, FinalStep&& final_step) {
   RootResult out;
   double x = (x0 >= lo && x0 <= hi) ? x0 : 0.5 * (lo + hi);
   for (int it = 1; it <= max_iter; ++it) {
@@ -45,18 +49,31 @@ RootResult safeguarded_newton(Eval&& eval, double lo, double hi, double x0, doub
     }
     double next = x - g / dg;
     const bool newton_ok = dg > 0.0 && std::isfinite(next) && next > lo && next < hi;
+    if (newton_ok && final_step(x, next - x)) {
+      out.x = next;
+      out.converged = out.stepped = true;
+      return out;
+    }
     if (!newton_ok) next = 0.5 * (lo + hi);
     const double step = std::abs(next - x);
     x = next;
     if (step <= x_tol || !(lo < hi) || std::nextafter(lo, hi) >= hi) {
       out.x = x;
-      out.converged = true;
+      out.converged = out.stepped = true;
       return out;
     }
   }
   out.x = x;
   out.converged = false;
+  out.stepped = true;
   return out;
+}
+
+template <class Eval>
+RootResult safeguarded_newton(Eval&& eval, double lo, double hi, double x0, double f_tol,
+                              double x_tol, int max_iter = 64) {
+  return safeguarded_newton(std::forward<Eval>(eval), lo, hi, x0, f_tol, x_tol, max_iter,
+                            [](double, double) { return false; });
 }
 
 }  // namespace disklab::math
