@@ -52,15 +52,21 @@ struct MapGeometry : SphericalEllipse {
     return g;
   }
 
-  // 1 - h_r (eq. 17) as r^2 / (1 + sqrt(1 - r^2)), from sin/cos of the azimuth phi.
+  // h_r (eq. 17) and 1 - h_r, the radial map's segment, in the two angles the maps use:
+  //  - the azimuth phi (its sine and cosine): 1 - h_r = r^2 / (1 + sqrt(1 - r^2)) with
+  //    solid_angle.h's radius of eq. (18);
+  //  - the planar parametric angle s (cs, ss): r^2 = a^2 cs^2 + b^2 ss^2 and
+  //    1 - r^2 = cos^2(alpha) cs^2 + cos^2(beta) ss^2, both from positive terms.
   double one_minus_hr(double sin_phi, double cos_phi) const {
-    const double as = a * sin_phi, bc = b * cos_phi;
-    const double den = as * as + bc * bc;
-    const double r2 = (a * b) * (a * b) / den;
-    const double one_minus_r2 = (as * as * one_minus_b2 + bc * bc * one_minus_a2) / den;
-    return r2 / (1.0 + std::sqrt(std::max(0.0, one_minus_r2)));
+    return one_minus_h_r(*this, sin_phi, cos_phi);
   }
   double one_minus_hr(double phi) const { return one_minus_hr(std::sin(phi), std::cos(phi)); }
+  double hr_parametric(double cs, double ss) const {
+    return std::sqrt(std::max(0.0, one_minus_a2 * cs * cs + one_minus_b2 * ss * ss));
+  }
+  double one_minus_hr_parametric(double cs, double ss) const {
+    return (a * a * cs * cs + b * b * ss * ss) / (1.0 + hr_parametric(cs, ss));
+  }
 
   // Omega_r (eq. 16/19) at the planar parametric angle s in [0, pi/2].
   double radial_sector_s(double s) const {

@@ -16,6 +16,7 @@
 #include <cmath>
 
 #include "disklab/ellipse/map_geometry.h"
+#include "disklab/ellipse/quadrant.h"
 #include "disklab/ellipse/radial_series.h"
 #include "disklab/ellipse/sampler.h"
 #include "disklab/math/constants.h"
@@ -42,13 +43,6 @@ struct RadialQuadrant {
     return use_series() ? series->omega(s, std::cos(s), std::sin(s)) : g->radial_sector_s(s);
   }
 
-  // 1 - h_r and the planar radius^2 at parametric angle s.
-  double one_minus_hr_s(double cs, double ss) const {
-    const double r2 = g->a * g->a * cs * cs + g->b * g->b * ss * ss;
-    const double one_minus_r2 = g->one_minus_a2 * cs * cs + g->one_minus_b2 * ss * ss;
-    return r2 / (1.0 + std::sqrt(std::max(0.0, one_minus_r2)));
-  }
-
   // s with Omega_r(s) = t Omega_r(pi/2), eq. (21); t in [0, 1]. Starts from s0 when given.
   double solve_s(double t, int* iterations = nullptr, double s0 = -1.0) const {
     if (iterations) *iterations = 0;
@@ -60,8 +54,7 @@ struct RadialQuadrant {
     const RadialSeries* fast = use_series() ? series : nullptr;
     auto eval = [this, fast, target, ab](double s) {
       const double cs = std::cos(s), ss = std::sin(s);
-      const double one_minus_r2 = g->one_minus_a2 * cs * cs + g->one_minus_b2 * ss * ss;
-      const double deriv = ab / (1.0 + std::sqrt(std::max(0.0, one_minus_r2)));
+      const double deriv = ab / (1.0 + g->hr_parametric(cs, ss));
       const double value = fast ? fast->omega(s, cs, ss) : g->radial_sector_s(s);
       return std::pair<double, double>(value - target, deriv);
     };
@@ -98,8 +91,8 @@ struct RadialQuadrant {
     if (!(t < 1.0)) return {math::kHalfPi, std::cos(math::kHalfPi), 1.0};
     const RadialSeries& S = *series;
     const double target = t * S.quadrant, tol = kRadialNewtonTol * S.quadrant;
-    const double ab = g->a * g->b, A = g->one_minus_a2, B = g->one_minus_b2;
-    const double diff = g->a2_minus_b2;  // B - A
+    const double ab = g->a * g->b;
+    const double diff = g->a2_minus_b2;  // cos^2(beta) - cos^2(alpha)
     const double h_min = g->cos_alpha;
     const double curvature = ab * diff / (h_min * (1.0 + h_min) * (1.0 + h_min));
     if (!(start.s >= 0.0 && start.s <= math::kHalfPi)) {
@@ -110,7 +103,7 @@ struct RadialQuadrant {
     Angle at = start;  // the last evaluated angle, with its cosine and sine
     auto eval = [&](double s) {
       if (s != at.s) at = {s, std::cos(s), std::sin(s)};
-      const double h = std::sqrt(std::max(0.0, A * at.cs * at.cs + B * at.ss * at.ss));
+      const double h = g->hr_parametric(at.cs, at.ss);
       return std::pair<double, double>(S.omega(s, at.cs, at.ss) - target, ab / (1.0 + h));
     };
     auto final_step = [&](double, double delta) {
@@ -141,29 +134,22 @@ struct RadialQuadrant {
     // |(px, py)|: plain sqrt unless the squares could underflow (a < ~1e-145).
     const double r2 = px * px + py * py;
     const double r = r2 > 1e-290 ? std::sqrt(r2) : std::hypot(px, py);
-    const double omh = eps2 * one_minus_hr_s(cs, ss);  // 1 - h
+    const double omh = eps2 * g->one_minus_hr_parametric(cs, ss);  // 1 - h
     const double h = 1.0 - omh;
     const double rho = std::sqrt(std::max(0.0, omh * (2.0 - omh)));  // sqrt(1 - h^2)
-    double x = r > 0.0 ? rho * px / r : rho, y = r > 0.0 ? rho * py / r : 0.0;
-    if (k == 1 || k == 2) x = -x;
-    if (k >= 2) y = -y;
-    return {x, y, h};
+    return unfold_direction(k, r > 0.0 ? rho * px / r : rho, r > 0.0 ? rho * py / r : 0.0, h);
   }
 
   // Inverse of local_point within a quadrant: (t', eps2) for a local direction folded into the
   // first quadrant; returns the quadrant index in k.
   Point2 invert_local(const Vec3& l, int& k) const {
-    const double x = l.x(), y = l.y();
-    const bool left = std::signbit(x), down = std::signbit(y);
-    k = down ? (left ? 2 : 3) : (left ? 1 : 0);
-    const double ax = std::abs(x), ay = std::abs(y);
+    const FoldedDirection f = fold_direction(l);
+    k = f.k;
     // tan s = (a/b) tan phi = (a |y|) / (b |x|).
-    const double s = std::atan2(g->a * ay, g->b * ax);
+    const double s = std::atan2(g->a * f.y, g->b * f.x);
     const double t = std::clamp(sector_s(s) / quadrant_solid_angle(), 0.0, 1.0);
-    const double cs = std::cos(s), ss = std::sin(s);
-    const double rho2 = x * x + y * y;
-    const double omh = rho2 / (1.0 + std::max(0.0, l.z()));  // 1 - h without cancellation
-    const double bound = one_minus_hr_s(cs, ss);
+    const double omh = one_minus_z(l);  // 1 - h
+    const double bound = g->one_minus_hr_parametric(std::cos(s), std::sin(s));
     const double eps2 = bound > 0.0 ? std::clamp(omh / bound, 0.0, 1.0) : 0.0;
     return {t, eps2};
   }
@@ -177,19 +163,6 @@ inline EllipseSample finish_sample(const MapGeometry& g, const Vec3& local, doub
   out.pdf = pdf;
   out.valid = true;
   return out;
-}
-
-// Full-ellipse eps1 -> (quadrant k, fraction t' in that quadrant, mirrored on odd quadrants).
-inline int split_quadrant(double eps1, double& t_folded) {
-  const double e = std::clamp(eps1, 0.0, 1.0) * 4.0;
-  const int k = std::min(3, static_cast<int>(e));
-  const double t = std::clamp(e - k, 0.0, 1.0);
-  t_folded = (k & 1) ? 1.0 - t : t;
-  return k;
-}
-inline double join_quadrant(int k, double t_folded) {
-  const double t = (k & 1) ? 1.0 - t_folded : t_folded;
-  return (k + t) * 0.25;
 }
 
 struct RadialMap {

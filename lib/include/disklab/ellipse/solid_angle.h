@@ -94,8 +94,7 @@ inline double radial_azimuth(const SphericalEllipse& se, double vphi) {
 struct RadialRadius {
   double r2 = 0.0, one_minus_r2 = 1.0;
 };
-inline RadialRadius radial_radius2(const SphericalEllipse& se, double phi) {
-  const double s = std::sin(phi), c = std::cos(phi);
+inline RadialRadius radial_radius2(const SphericalEllipse& se, double s, double c) {
   const double as = se.a * s, bc = se.b * c;
   const double den = as * as + bc * bc;
   RadialRadius out;
@@ -103,6 +102,9 @@ inline RadialRadius radial_radius2(const SphericalEllipse& se, double phi) {
   out.r2 = (se.a * se.b) * (se.a * se.b) / den;
   out.one_minus_r2 = (as * as * se.one_minus_b2 + bc * bc * se.one_minus_a2) / den;
   return out;
+}
+inline RadialRadius radial_radius2(const SphericalEllipse& se, double phi) {
+  return radial_radius2(se, std::sin(phi), std::cos(phi));
 }
 
 // Eq. (17): h_r(phi) = sqrt(1 - r^2(phi)), the lower end of the radial map's segment.
@@ -112,10 +114,13 @@ inline double h_r(const SphericalEllipse& se, double phi) {
 }
 // 1 - h_r(phi) = r^2 / (1 + sqrt(1 - r^2)): the integrand of eq. (16) and dOmega_r/dphi, exact
 // for Newton. (1 - sqrt(1 - r^2) would cancel for small r.)
-inline double one_minus_h_r(const SphericalEllipse& se, double phi) {
+inline double one_minus_h_r(const SphericalEllipse& se, double sin_phi, double cos_phi) {
   if (se.empty) return 0.0;
-  const RadialRadius rr = radial_radius2(se, phi);
-  return rr.r2 / (1.0 + std::sqrt(rr.one_minus_r2));
+  const RadialRadius rr = radial_radius2(se, sin_phi, cos_phi);
+  return rr.r2 / (1.0 + std::sqrt(std::max(0.0, rr.one_minus_r2)));
+}
+inline double one_minus_h_r(const SphericalEllipse& se, double phi) {
+  return one_minus_h_r(se, std::sin(phi), std::cos(phi));
 }
 
 namespace detail {

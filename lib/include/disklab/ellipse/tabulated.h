@@ -91,12 +91,10 @@ struct TabulatedMap {
     const double cp = std::cos(phi), sp = std::sin(phi);
     const double bound = g.one_minus_hr(sp, cp);
     const double rho = std::sqrt(std::max(0.0, omh * (2.0 - omh)));
-    double lx = rho * cp, ly = rho * sp;
-    if (k == 1 || k == 2) lx = -lx;
-    if (k >= 2) ly = -ly;
     const double proposal = 1.0 / (4.0 * n * dphi * bound_j);
     if (!(proposal < HUGE_VAL)) return {};  // a cell of zero width: nothing to propose
-    EllipseSample out = finish_sample(g, Vec3(lx, ly, 1.0 - omh), proposal);
+    EllipseSample out =
+        finish_sample(g, unfold_direction(k, rho * cp, rho * sp, 1.0 - omh), proposal);
     out.valid = omh <= bound;
     if (biased) out.pdf = pdf_uniform;
     return out;
@@ -122,8 +120,8 @@ struct TabulatedMap {
   double pdf(const Vec3& direction) const {
     if (!g.contains(direction)) return 0.0;
     if (biased) return pdf_uniform;
-    const Vec3 l = g.to_local(direction.normalized());
-    const int j = cell_of(std::atan2(std::abs(l.y()), std::abs(l.x())));
+    const FoldedDirection fd = fold_direction(g.to_local(direction.normalized()));
+    const int j = cell_of(std::atan2(fd.y, fd.x));
     const double proposal =
         1.0 / (4.0 * table->n_eps * (phi_at(j + 1) - phi_at(j)) * g.one_minus_hr(phi_at(j)));
     return proposal < HUGE_VAL ? proposal : 0.0;
@@ -132,17 +130,15 @@ struct TabulatedMap {
   // Direction -> (eps1, eps2) of this table (binary search of the cell; no root finding).
   Point2 invert_local(const Vec3& l) const {
     if (g.empty) return {};
-    const double x = l.x(), y = l.y();
-    const bool left = std::signbit(x), down = std::signbit(y);
-    const int k = down ? (left ? 2 : 3) : (left ? 1 : 0);
-    const double phi = std::atan2(std::abs(y), std::abs(x));
+    const FoldedDirection fd = fold_direction(l);
+    const double phi = std::atan2(fd.y, fd.x);
     const int n = table->n_eps;
     const int lo = cell_of(phi);
     const double dphi = phi_at(lo + 1) - phi_at(lo);
     const double f = dphi > 0.0 ? std::clamp((phi - phi_at(lo)) / dphi, 0.0, 1.0) : 0.0;
-    const double omh = (x * x + y * y) / (1.0 + std::max(0.0, l.z()));
+    const double omh = one_minus_z(l);
     const double bound_j = g.one_minus_hr(phi_at(lo));
-    return {join_quadrant(k, (lo + f) / n),
+    return {join_quadrant(fd.k, (lo + f) / n),
             bound_j > 0.0 ? std::clamp(omh / bound_j, 0.0, 1.0) : 0.0};
   }
   Point2 invert(const Vec3& direction) const { return invert_local(g.to_local(direction)); }
