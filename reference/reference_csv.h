@@ -86,4 +86,42 @@ inline int64_t ulp_distance(double a, double b) {
   return key(a) - key(b);
 }
 
+// One row of solid_angle.csv: a disk, a shading point and the 45-digit solid angle.
+struct SolidAngleRow {
+  int id = 0;
+  std::string category;
+  double center[3] = {}, normal[3] = {}, point[3] = {};
+  double radius = 0.0;
+  bool two_sided = false;
+  double distance = 0.0;   // |o - c| / r
+  std::string omega_text;  // the reference, all digits
+  double omega = 0.0;      // the same rounded to double
+};
+
+// Reads solid_angle.csv (the one reader of that table for the tests and `disklab accuracy`).
+inline std::vector<SolidAngleRow> read_solid_angle_table(const std::filesystem::path& path) {
+  const CsvTable t =
+      read_csv_table(path, {"id", "category", "cx", "cy", "cz", "nx", "ny", "nz", "radius", "ox",
+                            "oy", "oz", "two_sided", "distance", "omega"});
+  std::vector<SolidAngleRow> rows;
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    const auto num = [&](std::size_t i) { return t.number(r, i); };
+    SolidAngleRow row;
+    row.id = static_cast<int>(num(0));
+    row.category = t.rows[r][1];
+    for (int k = 0; k < 3; ++k) {
+      row.center[k] = num(2 + k);
+      row.normal[k] = num(5 + k);
+      row.point[k] = num(9 + k);
+    }
+    row.radius = num(8);
+    row.two_sided = t.rows[r][12] == "1";
+    row.distance = num(13);
+    row.omega_text = t.rows[r][14];
+    row.omega = num(14);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
 }  // namespace disklab::reference

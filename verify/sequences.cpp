@@ -160,15 +160,8 @@ int run_sequences(SequencesState s) {
 
 // The first kFigurePoints points of every sequence (seed 1) as one CSV, drawn as a grid.
 void write_figure(const fs::path& png, uint64_t seed) {
-  const fs::path csv =
-      fs::temp_directory_path() / ("disklab-sequences-" + std::to_string(::getpid()) + ".csv");
-  struct Cleanup {
-    fs::path file;
-    ~Cleanup() {
-      std::error_code ec;
-      fs::remove(file, ec);
-    }
-  } cleanup{csv};
+  TempFiles temp;
+  const fs::path csv = temp.add("sequences");
   {
     std::ofstream f(csv);
     f << "sequence,index,u,v\n";

@@ -26,6 +26,7 @@
 
 #include "command.h"
 #include "common/args.h"
+#include "common/ellipse_cli.h"
 #include "common/output.h"
 #include "disklab/ellipse/geometry.h"
 #include "disklab/ellipse/solid_angle.h"
@@ -87,19 +88,11 @@ std::string quadrature_failure(const ellipse::SphericalEllipse& se) {
 }
 
 int run_solid_angle(const SolidAngleState& s) {
-  if (s.center.empty()) throw UsageError("--center: missing (the disk centre X,Y,Z)");
-  if (s.normal.empty()) throw UsageError("--normal: missing (the disk normal X,Y,Z)");
-  if (s.radius.empty()) throw UsageError("--radius: missing");
-  if (s.point.empty()) throw UsageError("--point: missing (the shading point X,Y,Z)");
+  const SceneInput in =
+      parse_scene(s.center, s.normal, s.radius, s.point, s.two_sided, /*allow_zero_radius=*/true);
   require_one_of(s.method, kMethods, "--method");
-  ellipse::Disk disk;
-  disk.center = parse_vec3(s.center, "--center");
-  disk.normal = parse_vec3(s.normal, "--normal");
-  disk.radius = parse_double(s.radius, "--radius");
-  disk.two_sided = s.two_sided;
-  const Vec3 o = parse_vec3(s.point, "--point");
-  if (disk.radius < 0.0) throw UsageError("--radius: " + s.radius + " is negative");
-  if (!(disk.normal.norm() > 0.0)) throw UsageError("--normal: the zero vector has no direction");
+  const ellipse::Disk& disk = in.disk;
+  const Vec3& o = in.point;
   ellipse::SphericalEllipse se;
   try {
     se = ellipse::make_spherical_ellipse(disk, o);

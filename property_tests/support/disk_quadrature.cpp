@@ -43,23 +43,20 @@ std::filesystem::path solid_angle_table_path() {
 }
 
 std::vector<SolidAngleRow> load_solid_angle_table() {
-  const auto t = reference::read_csv_table(
-      solid_angle_table_path(), {"id", "category", "cx", "cy", "cz", "nx", "ny", "nz", "radius",
-                                 "ox", "oy", "oz", "two_sided", "distance", "omega"});
   std::vector<SolidAngleRow> rows;
-  for (std::size_t r = 0; r < t.rows.size(); ++r) {
-    const auto num = [&](std::size_t i) { return t.number(r, i); };
+  for (const reference::SolidAngleRow& t :
+       reference::read_solid_angle_table(solid_angle_table_path())) {
     SolidAngleRow row;
-    row.id = static_cast<int>(num(0));
-    row.category = t.rows[r][1];
-    row.center = Vec3(num(2), num(3), num(4));
-    row.normal = Vec3(num(5), num(6), num(7));
-    row.radius = num(8);
-    row.point = Vec3(num(9), num(10), num(11));
-    row.two_sided = t.rows[r][12] == "1";
-    row.distance = num(13);
-    row.omega_text = t.rows[r][14];
-    row.omega = num(14);
+    row.id = t.id;
+    row.category = t.category;
+    row.center = Vec3(t.center[0], t.center[1], t.center[2]);
+    row.normal = Vec3(t.normal[0], t.normal[1], t.normal[2]);
+    row.radius = t.radius;
+    row.point = Vec3(t.point[0], t.point[1], t.point[2]);
+    row.two_sided = t.two_sided;
+    row.distance = t.distance;
+    row.omega_text = t.omega_text;
+    row.omega = t.omega;
     rows.push_back(row);
   }
   return rows;

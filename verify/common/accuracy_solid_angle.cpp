@@ -48,21 +48,17 @@ struct Row {
 };
 
 std::vector<Row> read_table(const std::filesystem::path& path) {
-  const auto t = reference::read_csv_table(
-      path, {"id", "category", "cx", "cy", "cz", "nx", "ny", "nz", "radius", "ox", "oy", "oz",
-             "two_sided", "distance", "omega"});
   std::vector<Row> rows;
-  for (std::size_t i = 0; i < t.rows.size(); ++i) {
-    const auto num = [&](std::size_t k) { return t.number(i, k); };
+  for (const reference::SolidAngleRow& t : reference::read_solid_angle_table(path)) {
     Row r;
-    r.id = static_cast<int>(num(0));
-    r.category = t.rows[i][1];
-    r.disk.center = Vec3(num(2), num(3), num(4));
-    r.disk.normal = Vec3(num(5), num(6), num(7));
-    r.disk.radius = num(8);
-    r.o = Vec3(num(9), num(10), num(11));
-    r.disk.two_sided = t.rows[i][12] == "1";
-    r.reference = std::strtold(t.rows[i][14].c_str(), nullptr);
+    r.id = t.id;
+    r.category = t.category;
+    r.disk.center = Vec3(t.center[0], t.center[1], t.center[2]);
+    r.disk.normal = Vec3(t.normal[0], t.normal[1], t.normal[2]);
+    r.disk.radius = t.radius;
+    r.disk.two_sided = t.two_sided;
+    r.o = Vec3(t.point[0], t.point[1], t.point[2]);
+    r.reference = std::strtold(t.omega_text.c_str(), nullptr);
     rows.push_back(r);
   }
   return rows;

@@ -43,20 +43,35 @@ const std::string& require_given(const std::string& value, const char* what, con
 }
 }  // namespace
 
+SceneInput parse_scene(const std::string& center, const std::string& normal,
+                       const std::string& radius, const std::string& point, bool two_sided,
+                       bool allow_zero_radius) {
+  SceneInput in;
+  in.disk.center =
+      parse_vec3(require_given(center, "--center", "the disk centre X,Y,Z"), "--center");
+  in.disk.normal =
+      parse_vec3(require_given(normal, "--normal", "the disk normal X,Y,Z"), "--normal");
+  in.disk.radius = parse_double(
+      require_given(radius, "--radius",
+                    allow_zero_radius ? "the disk radius, >= 0" : "the disk radius, > 0"),
+      "--radius");
+  in.disk.two_sided = two_sided;
+  in.point = parse_vec3(require_given(point, "--point", "the shading point X,Y,Z"), "--point");
+  if (allow_zero_radius) {
+    if (in.disk.radius < 0.0) throw UsageError("--radius: " + radius + " is negative");
+  } else {
+    require_positive(in.disk.radius, "--radius");
+  }
+  if (!(in.disk.normal.squaredNorm() > 0.0))
+    throw UsageError("--normal: '" + normal + "' has zero length (the disk has no orientation)");
+  return in;
+}
+
 ellipse::AnyMap make_ellipse_map(const EllipseOptions& o) {
   require_one_of(o.map, ellipse::map_names(), "--map");
-  const Vec3 c =
-      parse_vec3(require_given(o.center, "--center", "the disk centre X,Y,Z"), "--center");
-  const Vec3 n =
-      parse_vec3(require_given(o.normal, "--normal", "the disk normal X,Y,Z"), "--normal");
-  const double r =
-      parse_double(require_given(o.radius, "--radius", "the disk radius, > 0"), "--radius");
-  const Vec3 p =
-      parse_vec3(require_given(o.point, "--point", "the shading point X,Y,Z"), "--point");
-  require_positive(r, "--radius");
-  if (!(n.squaredNorm() > 0.0))
-    throw UsageError("--normal: '" + o.normal + "' has zero length (the disk has no orientation)");
-  ellipse::AnyMap m = ellipse::AnyMap::make(o.map, ellipse::Disk{c, n, r, o.two_sided}, p);
+  const SceneInput in = parse_scene(o.center, o.normal, o.radius, o.point, o.two_sided);
+  const Vec3& p = in.point;
+  ellipse::AnyMap m = ellipse::AnyMap::make(o.map, in.disk, p);
   if (!m.valid())
     throw UsageError("degenerate geometry: the point " + o.point + " sees no disk (it is " +
                      (o.two_sided ? "" : "behind the one-sided disk, ") +

@@ -30,8 +30,20 @@ void add_ellipse_options(CLI::App& sub, EllipseOptions& o);
 // Checks that --map and --strategy are not both given, and that scene options come with --map.
 void check_ellipse_exclusive(const EllipseOptions& o, const std::string& strategy);
 
-// Validates the options (known name; every scene option present and finite; radius > 0; normal
-// non-zero; the point sees the disk) and builds the map. Throws UsageError with one line.
+// A disk light and a shading point from the text of --center, --normal, --radius, --point and
+// --two-sided: every value present and finite, the normal non-zero, the radius > 0 (or >= 0
+// with allow_zero_radius). Throws UsageError with one line. Shared by the commands that take a
+// scene (map, points, solid-angle).
+struct SceneInput {
+  ellipse::Disk disk;
+  Vec3 point = Vec3::Zero();
+};
+SceneInput parse_scene(const std::string& center, const std::string& normal,
+                       const std::string& radius, const std::string& point, bool two_sided,
+                       bool allow_zero_radius = false);
+
+// Validates the options (known name; the scene as parse_scene; the point sees the disk) and
+// builds the map. Throws UsageError with one line.
 ellipse::AnyMap make_ellipse_map(const EllipseOptions& o);
 
 // One-line description of the scene for titles: "c=(...) n=(...) r=... o=(...)".

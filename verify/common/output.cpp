@@ -79,6 +79,20 @@ void write_file_atomic(const fs::path& target, const std::string& content) {
   file.commit();
 }
 
+TempFiles::~TempFiles() {
+  std::error_code ec;
+  for (const auto& f : files_)
+    fs::remove(f, ec);
+}
+
+fs::path TempFiles::add(const std::string& stem, const std::string& extension) {
+  static std::atomic<int> counter{0};
+  fs::path p = fs::temp_directory_path() / ("disklab-" + stem + "-" + std::to_string(::getpid()) +
+                                            "-" + std::to_string(counter++) + extension);
+  files_.push_back(p);
+  return p;
+}
+
 Progress::Progress(std::string label, uint64_t total)
     : label_(std::move(label)),
       total_(total),

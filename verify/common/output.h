@@ -38,6 +38,21 @@ void check_out_file(const std::string& out);
 // Writes `content` to `target` atomically.
 void write_file_atomic(const std::filesystem::path& target, const std::string& content);
 
+// Temporary files in the system's temporary folder (inputs of the plot scripts), removed when the
+// object dies, whatever happens.
+class TempFiles {
+ public:
+  TempFiles() = default;
+  TempFiles(const TempFiles&) = delete;
+  TempFiles& operator=(const TempFiles&) = delete;
+  ~TempFiles();
+  // A new path "disklab-<stem>-<pid>-<k><extension>", removed with this object.
+  std::filesystem::path add(const std::string& stem, const std::string& extension = ".csv");
+
+ private:
+  std::vector<std::filesystem::path> files_;
+};
+
 // Progress of a long run on stderr: a rewritten line on a terminal, a line per ~10% otherwise.
 // Thread-safe tick(); silent when DISKLAB_QUIET is set.
 class Progress {
