@@ -32,6 +32,14 @@ constexpr double kAreaRel = 1e-9;
 // estimate it reached is at most kAreaRel / 100, so a failure is the map's and not Green's.
 constexpr double kQuadratureRel = kAreaRel / 1000.0;
 constexpr double kQuadratureMaxRel = kAreaRel / 100.0;
+// The Green's-theorem quadrature on maps with closed-form image areas: driven to 1e-14 (1e-13
+// relative for the warp), checked to ten times that; a reflection's signed area to its rounding.
+constexpr double kGreenTarget = 1e-14, kGreenCheck = 1e-13;
+constexpr double kGreenWarpTargetRel = 1e-13, kGreenWarpCheckRel = 1e-12;
+constexpr double kGreenReflection = 1e-15;
+// Exact disk-rectangle areas (segments by asin and square roots): a few ulps of pi; the 37 x 37
+// tiling sums 1369 of them.
+constexpr double kDiskRectAbs = 1e-15, kDiskTilingAbs = 1e-13;
 // Grid sizes: n up to 32 (1024 strata), as the issue asks; 1 checks the whole domain.
 constexpr int kGrids[] = {1, 2, 3, 4, 8, 16, 32};
 
@@ -144,32 +152,32 @@ Point2 warp(Point2 p) {
 }
 
 TEST(GreenArea, MatchesClosedFormsOnCurvedImages) {
-  const AreaEstimate s = stratum_image_area(shear, 0.25, 0.75, 0.1, 0.6, 1e-14);
-  EXPECT_NEAR(s.area, 0.25, 1e-13) << "error estimate " << s.error;
+  const AreaEstimate s = stratum_image_area(shear, 0.25, 0.75, 0.1, 0.6, kGreenTarget);
+  EXPECT_NEAR(s.area, 0.25, kGreenCheck) << "error estimate " << s.error;
   const double u0 = 0.2, u1 = 1.3, v0 = 0.0, v1 = 2.0;
   // int 2u(1 + sin u) du = u^2 + 2(sin u - u cos u)
   auto F = [](double u) { return u * u + 2.0 * (std::sin(u) - u * std::cos(u)); };
   const double exact = (F(u1) - F(u0)) * (v1 - v0);
-  const AreaEstimate w = stratum_image_area(warp, u0, u1, v0, v1, 1e-13 * exact);
-  EXPECT_NEAR(w.area, exact, 1e-12 * exact) << "error estimate " << w.error;
+  const AreaEstimate w = stratum_image_area(warp, u0, u1, v0, v1, kGreenWarpTargetRel * exact);
+  EXPECT_NEAR(w.area, exact, kGreenWarpCheckRel * exact) << "error estimate " << w.error;
   // A reflection reverses orientation: the signed area is negative.
   const AreaEstimate r = stratum_image_area(
       [](Point2 p) {
         return Point2{p.y, p.x};
       },
-      0.0, 0.5, 0.0, 0.25, 1e-15);
-  EXPECT_NEAR(r.area, -0.125, 1e-15);
+      0.0, 0.5, 0.0, 0.25, kGreenReflection);
+  EXPECT_NEAR(r.area, -0.125, kGreenReflection);
 }
 
 TEST(DiskRectArea, TilesTheDiskAndMatchesKnownPieces) {
   // Whole disk, a half, a quadrant, a thin band through the centre, and an empty corner cell.
-  EXPECT_NEAR(disklab::test::disk_rect_area(-2, 2, -2, 2), kPi, 1e-15);
-  EXPECT_NEAR(disklab::test::disk_rect_area(0, 1, -1, 1), kPi / 2, 1e-15);
-  EXPECT_NEAR(disklab::test::disk_rect_area(0, 1, 0, 1), kPi / 4, 1e-15);
+  EXPECT_NEAR(disklab::test::disk_rect_area(-2, 2, -2, 2), kPi, kDiskRectAbs);
+  EXPECT_NEAR(disklab::test::disk_rect_area(0, 1, -1, 1), kPi / 2, kDiskRectAbs);
+  EXPECT_NEAR(disklab::test::disk_rect_area(0, 1, 0, 1), kPi / 4, kDiskRectAbs);
   EXPECT_NEAR(disklab::test::disk_rect_area(0.9, 1.0, 0.9, 1.0), 0.0, 0.0);
   // The square inscribed in the disk is fully inside.
   const double h = std::sqrt(0.5);
-  EXPECT_NEAR(disklab::test::disk_rect_area(-h, h, -h, h), 2.0, 1e-15);
+  EXPECT_NEAR(disklab::test::disk_rect_area(-h, h, -h, h), 2.0, kDiskRectAbs);
   // A 37 x 37 grid (odd, cells straddling the axes and the rim) sums to pi.
   const int m = 37;
   double sum = 0.0;
@@ -177,7 +185,7 @@ TEST(DiskRectArea, TilesTheDiskAndMatchesKnownPieces) {
     for (int j = 0; j < m; ++j)
       sum += disklab::test::disk_rect_area(-1 + 2.0 * i / m, -1 + 2.0 * (i + 1) / m,
                                            -1 + 2.0 * j / m, -1 + 2.0 * (j + 1) / m);
-  EXPECT_NEAR(sum, kPi, 1e-13);
+  EXPECT_NEAR(sum, kPi, kDiskTilingAbs);
 }
 
 }  // namespace

@@ -130,13 +130,28 @@ TEST(AnyMap, UnknownNamesThrowInvalidArgument) {
   }
 }
 
-TEST(AnyMap, Properties) {
-  for (const auto& name : kExpectedNames) {
-    const MapKind k = *ellipse::parse_map(name);
-    EXPECT_EQ(ellipse::map_copies(k), name == "radial4" ? 4 : 1) << name;
-    EXPECT_EQ(ellipse::map_has_inverse(k), name != "gamito") << name;
-    EXPECT_EQ(ellipse::map_is_uniform(k), name != "area" && name != "gamito" && name != "tabulated")
-        << name;
+// The kind predicates describe what the maps do: copies() is what sample_copies returns,
+// has_inverse() whether invert finds valid samples back, is_uniform whether every valid sample's
+// pdf is 1/Omega (checked on every configuration with 64 samples each).
+TEST(AnyMap, PropertiesDescribeBehaviour) {
+  for (const DiskConfig& c : map_configs()) {
+    for (const auto& name : kExpectedNames) {
+      const auto m = ellipse::AnyMap::make(name, c.disk(), c.point);
+      ASSERT_TRUE(m.valid()) << name << " " << c.describe();
+      bool all_uniform = true, all_inverted = true;
+      std::array<ellipse::EllipseSample, 4> out;
+      for (int i = 0; i < 64; ++i) {
+        const Point2 u{(i + 0.5) / 64, ((i * 37) % 64 + 0.5) / 64};
+        EXPECT_EQ(m.sample_copies(u, out), m.copies()) << name;
+        const ellipse::EllipseSample s = m.sample(u);
+        if (!s.valid) continue;
+        all_uniform &= std::abs(s.pdf * m.omega() - 1.0) <= kUniformPdfTol;
+        all_inverted &= m.invert(s.direction).has_value();
+      }
+      EXPECT_EQ(m.copies() == 4, name == "radial4") << name;
+      EXPECT_EQ(m.has_inverse(), all_inverted) << name << " " << c.describe();
+      EXPECT_EQ(ellipse::map_is_uniform(m.kind()), all_uniform) << name << " " << c.describe();
+    }
   }
 }
 

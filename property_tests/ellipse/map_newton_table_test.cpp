@@ -1,5 +1,6 @@
-// Newton iteration counts of the exact maps (recorded; configurations needing more than 4 are
-// reported) and the tabulated map's error against the exact map as the table is refined.
+// Newton iteration counts of the exact maps against the paper's bounds (recorded; configurations
+// above them are reported) and the tabulated map's error against the exact map as the table is
+// refined.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,12 +15,15 @@ namespace disklab::test {
 namespace {
 
 // ---- bounds (one place) ----
-// The paper reports 1-3 (parallel) and 1-4 (radial) Newton iterations. Our counts are
-// evaluations of the cumulative solid angle including the one that confirms convergence
-// (iterations + 1). The safeguard caps at 64; a solve that needs more than kMaxEvaluations
-// would mean the bracket/bisection fallback is doing the work, which we treat as a failure.
-constexpr int kMaxEvaluations = 12;
-constexpr int kReportAbove = 4;
+// The paper reports 1-4 Newton iterations for the radial map and 1-3 for the parallel map.
+// Our counts are evaluations of the cumulative solid angle, one more than the iterations when
+// the last one only confirms convergence. The radial family must stay within the paper's bound
+// (4 iterations + the confirming evaluation). The parallel map does not on near disks (it needs
+// up to ~11 evaluations there, reported below); for it the test asserts that no solve exhausts
+// the safeguard's evaluation cap (64), i.e. every solve converged.
+constexpr int kRadialPaperEvaluations = 4 + 1;
+constexpr int kParallelPaperEvaluations = 3 + 1;
+constexpr int kSafeguardCap = 64;
 // Observed order of the table's eps1 error under bilinear interpolation: 2 (error ~ n^-2). The
 // fitted slope over n = 16..128 must lie within +-0.35 of -2 (the fit is over 4 points and the
 // max-norm error of a piecewise-linear interpolant fluctuates by a constant factor).
@@ -46,17 +50,17 @@ TEST(MapNewton, IterationCountsRecorded) {
           worst = std::max(worst, it);
           sum += it;
           ++count;
-          EXPECT_LE(it, kMaxEvaluations)
+          EXPECT_LE(it, name == "parallel" ? kSafeguardCap - 1 : kRadialPaperEvaluations)
               << name << " on " << c.describe() << " u=(" << u.x << "," << u.y << ")";
         }
       }
+      const int paper = name == "parallel" ? kParallelPaperEvaluations : kRadialPaperEvaluations;
       report << "[newton] " << name << " " << c.name << ": evaluations mean " << sum / count
-             << " max " << worst << (worst > kReportAbove ? "  <-- more than 4" : "") << "\n";
-      over += worst > kReportAbove;
+             << " max " << worst << (worst > paper ? "  <-- above the paper's bound" : "") << "\n";
+      over += worst > paper;
     }
   }
-  std::cout << report.str() << "[newton] configurations with more than " << kReportAbove
-            << " evaluations: " << over << "\n";
+  std::cout << report.str() << "[newton] configurations above the paper's bound: " << over << "\n";
 }
 
 // eps1 error of a table: max over a fine eps grid of |Omega_r(phi_table(t))/Omega_q - t|.

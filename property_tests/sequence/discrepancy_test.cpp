@@ -18,6 +18,12 @@
 namespace disklab::sequence {
 namespace {
 
+// Warnock's formula against exact integration: both exact formulas evaluated in floating point,
+// D^2 ~ 1e-2..1e-3 for these N, so 1e-12 relative is far inside their rounding; the one-point
+// closed form is a few roundings of O(1) values.
+constexpr double kWarnockVsCellsRel = 1e-12;
+constexpr double kOnePointAbs = 1e-15;
+
 // D^2 = int_[0,1]^2 (A([0,u))/N - u1 u2)^2 du, integrated exactly: between consecutive point
 // coordinates the count A is constant, and int int (a - x y)^2 over a rectangle is a polynomial.
 double l2_star_by_cells(const std::vector<Point2>& p) {
@@ -55,14 +61,12 @@ TEST(Discrepancy, WarnockMatchesExactCellIntegration) {
     for (Point2& q : p)
       q = {rng.next_double(), rng.next_double()};
     const double warnock = l2_star_discrepancy(p), cells = l2_star_by_cells(p);
-    // Both are exact formulas evaluated in floating point; D^2 ~ 1e-2..1e-3 here, so agreement
-    // to 1e-12 relative is far inside their rounding.
-    EXPECT_NEAR(warnock, cells, 1e-12 * cells) << "N=" << n;
+    EXPECT_NEAR(warnock, cells, kWarnockVsCellsRel * cells) << "N=" << n;
   }
   EXPECT_DOUBLE_EQ(l2_star_discrepancy({}), 1.0 / 3.0);
   // One point at the origin: the box [0,u) always contains it, D^2 = int (1 - u1 u2)^2 = 1 - 1/2 +
   // 1/9.
-  EXPECT_NEAR(l2_star_discrepancy({{0.0, 0.0}}), std::sqrt(1.0 - 0.5 + 1.0 / 9.0), 1e-15);
+  EXPECT_NEAR(l2_star_discrepancy({{0.0, 0.0}}), std::sqrt(1.0 - 0.5 + 1.0 / 9.0), kOnePointAbs);
 }
 
 TEST(Discrepancy, RandomPointsMatchTheExactExpectation) {
