@@ -32,6 +32,9 @@ constexpr double kRoundTripU = 1e-10;
 // rejected by contains(): 1e-6 is far above its slack (kRimSlack = 1e-9 plus 16 eps / b_t <=
 // 3e-8 on these configurations).
 constexpr double kOutsidePush = 1e-6;
+// A local coordinate this small (absolute, unit directions) is on a quadrant seam as far as a
+// direction that went through world coordinates can tell: 16 eps.
+constexpr double kSeamAbs = 16 * std::numeric_limits<double>::epsilon();
 
 const std::vector<std::string> kExpectedNames = {
     "area", "gamito", "parallel", "radial", "ld-radial", "radial4", "tabulated", "radial-fast"};
@@ -231,7 +234,11 @@ RC_GTEST_PROP(AnyMap, SamplesAreContainedAndInvertible, ()) {
     const auto back = m.invert_copy(s.direction, &copy);
     const auto back_scaled = m.invert_copy(1e-3 * s.direction);
     RC_ASSERT(back.has_value() && back_scaled.has_value());
-    RC_ASSERT(copy == k);
+    // On a quadrant seam (a local x or y within the world round trip's rounding, ~eps of the
+    // unit direction: far disks' copies there coincide) the neighbouring copy is as right.
+    const Vec3 l = m.geometry().to_local(s.direction);
+    const bool on_seam = std::min(std::abs(l.x()), std::abs(l.y())) <= kSeamAbs;
+    RC_ASSERT(copy == k || (on_seam && (out[copy].direction - s.direction).norm() <= kSeamAbs));
     RC_LOG() << "  -> u'=(" << back->x << ", " << back->y << ")\n";
     RC_ASSERT(back->x >= 0.0 && back->x <= 1.0 && back->y >= 0.0 && back->y <= 1.0);
     // The round trip in u on configurations with moderate conditioning: u.y away from 0 (eps1

@@ -100,10 +100,13 @@ RC_GTEST_PROP(MapPdf, PdfOfASampleIsItsPdf, ()) {
       RC_ASSERT(p == s.pdf);
     }
     // The length of the direction does not matter (area renormalizes it: a few ulps).
+    const double scaled = m.pdf(1e-3 * s.direction);
     if (name == "area")
-      RC_ASSERT(std::abs(m.pdf(1e-3 * s.direction) - p) <= kAreaPdfRel * p);
+      RC_ASSERT(std::abs(scaled - p) <= kAreaPdfRel * p);
+    else if (name == "tabulated" && scaled != p)
+      RC_ASSERT(near_cell_edge(m, s.direction));
     else
-      RC_ASSERT(m.pdf(1e-3 * s.direction) == p);
+      RC_ASSERT(scaled == p);
   }
 }
 
