@@ -7,8 +7,9 @@
 //    on odd quadrants, so the map is continuous across the seams;
 //  - eps2 = 0 at the ellipse centre: 1 - h = eps2 (1 - h_r(phi)), the analogue of r = sqrt(u)
 //    (eq. 22 as printed puts eps2 = 0 on the rim).
-// Root finding works in the tangent ellipse's parametric angle s (tan s = (a/b) tan phi, the
-// varphi_r of eq. 20) instead of phi: dOmega_r/ds = (1 - h_r) dphi/ds = a b / (1 + h_r) lies in
+// Root finding works in the planar (projected) ellipse's parametric angle s, tan s = (a/b) tan phi
+// (not eq. 20's varphi_r, tan varphi_r = (a_t/b_t) tan phi, which solid_angle.h integrates in),
+// instead of phi: dOmega_r/ds = (1 - h_r) dphi/ds = a b / (1 + h_r) lies in
 // [ab/2, ab], so Omega_r(s) is nearly linear, s0 = t pi/2 is the exact planar-ellipse answer,
 // and safeguarded Newton converges in a few steps at every eccentricity. The point is formed
 // from (a cos s, b sin s) / r without trigonometric round trips through phi.

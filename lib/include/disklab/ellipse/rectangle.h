@@ -3,8 +3,10 @@
 // "An Area-Preserving Parametrization for Spherical Rectangles"), the proposal of Gamito's disk
 // sampler. Written from the paper's construction: the rectangle is put in a local frame with the
 // shading point at the origin and the rectangle in the plane z = z0 < 0; the first coordinate
-// fixes the azimuthal slice by the area of the spherical quad cut off (a closed form, eq. in
-// Sec. 4 of the paper), the second interpolates the slice's cylindrical height linearly.
+// fixes the azimuthal slice by the solid angle of the spherical quad it cuts off (its angle sum
+// minus 2 pi, Girard's theorem, inverted for the slice's edge in closed form), the second
+// interpolates the slice's cylindrical height linearly (Ureña et al. 2013, the parametrization's
+// two coordinates).
 #include <algorithm>
 #include <cmath>
 
