@@ -89,11 +89,11 @@ struct RadialFastMap {
     const double* sine = sine_table();
     double c[kSeedNodes] = {};
     auto transform = [&](int nodes) {
-      const int stride = kSeedNodes / nodes;
+      const std::size_t stride = kSeedNodes / nodes, period = 2 * kSeedNodes;
       for (int k = 1; k < nodes; ++k) {
         double sum = 0.0;
-        for (int j = 1; j < nodes; ++j)
-          sum += f[j * stride] * sine[(j * k * stride) % (2 * kSeedNodes)];
+        for (std::size_t j = 1; j < static_cast<std::size_t>(nodes); ++j)
+          sum += f[j * stride] * sine[(j * static_cast<std::size_t>(k) * stride) % period];
         c[k - 1] = (2.0 / nodes) * sum;
       }
     };

@@ -83,8 +83,10 @@ struct RadialSeries {
     const auto& tab = tables();
     const int step = kMaxDegree / n;  // table stride for this degree
     double dg[kMaxDegree + 1];
-    for (int j = 0; j <= n; ++j)
-      dg[j] = dg_at(tab.cos2_half[j * step], tab.sin2_half[j * step]);
+    for (int j = 0; j <= n; ++j) {
+      const auto at = static_cast<std::size_t>(j) * static_cast<std::size_t>(step);
+      dg[j] = dg_at(tab.cos2_half[at], tab.sin2_half[at]);
+    }
     // DCT-I: a_k = (2/n) sum'' dg_j cos(j k pi / n); a_0 and a_n halved once more. For k >= 1
     // the constant g0 contributes sum'' cos(j k pi / n) = 0.
     double coef[kMaxDegree + 1];
