@@ -89,7 +89,7 @@ struct RadialFastMap {
     const double* sine = sine_table();
     double c[kSeedNodes] = {};
     auto transform = [&](int nodes) {
-      const std::size_t stride = kSeedNodes / nodes, period = 2 * kSeedNodes;
+      const std::size_t stride = kSeedNodes / nodes, period = std::size_t{2} * kSeedNodes;
       for (int k = 1; k < nodes; ++k) {
         double sum = 0.0;
         for (std::size_t j = 1; j < static_cast<std::size_t>(nodes); ++j)
