@@ -80,19 +80,15 @@ uint32_t for_each_row(const PointsState& s, const sequence::Sequence& seq, Emit&
 // Writes the CSV to `out` in chunks; returns the square points consumed.
 uint32_t write_csv(const PointsState& s, const sequence::Sequence& seq, std::ostream& out) {
   const bool mapped = !s.strategy.empty();
-  std::string buf = mapped ? "index,u,v,x,y,weight\n" : "index,u,v\n";
-  const uint32_t used = for_each_row(s, seq, [&](const Row& r) {
+  ChunkedOutput csv(out);
+  std::string& buf = csv.text();
+  buf = mapped ? "index,u,v,x,y,weight\n" : "index,u,v\n";
+  return for_each_row(s, seq, [&](const Row& r) {
     buf += std::to_string(r.index) + "," + fmt17(r.uv.x) + "," + fmt17(r.uv.y);
     if (mapped) buf += "," + fmt17(r.xy.x) + "," + fmt17(r.xy.y) + "," + fmt17(r.weight);
     buf += "\n";
-    if (buf.size() > (1u << 16)) {
-      out << buf;
-      buf.clear();
-    }
+    csv.row_done();
   });
-  out << buf;
-  out.flush();
-  return used;
 }
 
 // Images of the grid lines u = i/n and v = j/n under the strategy (polylines "line,x,y"), when

@@ -38,6 +38,30 @@ void check_out_file(const std::string& out);
 // Writes `content` to `target` atomically.
 void write_file_atomic(const std::filesystem::path& target, const std::string& content);
 
+// Text streamed to `out` through a buffer written every ~64 KiB: a CSV of millions of rows
+// needs no more memory than a chunk. Append to text(), call row_done() after each row; the
+// destructor (or flush()) writes the rest.
+class ChunkedOutput {
+ public:
+  explicit ChunkedOutput(std::ostream& out) : out_(out) {}
+  ChunkedOutput(const ChunkedOutput&) = delete;
+  ChunkedOutput& operator=(const ChunkedOutput&) = delete;
+  ~ChunkedOutput() { flush(); }
+  std::string& text() { return buf_; }
+  void row_done() {
+    if (buf_.size() > (std::size_t{1} << 16)) flush();
+  }
+  void flush() {
+    out_ << buf_;
+    buf_.clear();
+    out_.flush();
+  }
+
+ private:
+  std::ostream& out_;
+  std::string buf_;
+};
+
 // Temporary files in the system's temporary folder (inputs of the plot scripts), removed when the
 // object dies, whatever happens.
 class TempFiles {

@@ -57,7 +57,9 @@ uint32_t for_each_ellipse_row(const PointsState& s, const ellipse::AnyMap& m,
 uint32_t write_ellipse_csv(const PointsState& s, const ellipse::AnyMap& m,
                            const sequence::Sequence& seq, std::ostream& out,
                            bool plot_columns = false) {
-  std::string buf = plot_columns ? "index,u,v,x,y,z,pdf,dx,dy,lx,ly\n" : "index,u,v,x,y,z,pdf\n";
+  ChunkedOutput csv(out);
+  std::string& buf = csv.text();
+  buf = plot_columns ? "index,u,v,x,y,z,pdf,dx,dy,lx,ly\n" : "index,u,v,x,y,z,pdf\n";
   const ellipse::MapGeometry& g = m.geometry();
   const Vec3 e1 = g.frame.x, e2 = g.normal.cross(g.frame.x);
   const uint32_t used = for_each_ellipse_row(s, m, seq, [&](const EllipseRow& r) {
@@ -71,13 +73,9 @@ uint32_t write_ellipse_csv(const PointsState& s, const ellipse::AnyMap& m,
              fmt17(e.local.x() / g.a) + "," + fmt17(e.local.y() / g.a);
     }
     buf += "\n";
-    if (buf.size() > (1u << 16)) {
-      out << buf;
-      buf.clear();
-    }
+    csv.row_done();
   });
-  out << buf;
-  out.flush();
+  csv.flush();
   return used;
 }
 
