@@ -16,6 +16,7 @@
 #include "disklab/math/elliptic.h"
 #include "disklab/sequence/random.h"
 #include "math/elliptic_domain.h"
+#include "math/elliptic_pi_dd.h"  // lib/src: the Pi kernel's private hooks
 #include "math/elliptic_tables.h"
 
 namespace disklab::test {
@@ -94,10 +95,10 @@ TEST(EllipticReference, PiWithinTwoUlpOfTable) {
               (long long)plain.max, plain.rms(), plain.worst.c_str());
 }
 
-// ellint_pi<double> runs the double-double kernel where the CPU has AVX2 and FMA (elliptic.h,
-// FAST PATH; its AVX-512VL copy where the CPU has that too), else the long-double path; the
-// test above checks whichever this machine runs. These check each path by name, so every copy
-// this CPU runs is held to the target (and the portable path everywhere).
+// ellint_pi<double> runs the double-double kernel where the CPU has AVX2 and FMA
+// (elliptic_legendre.h, FAST PATH; its AVX-512VL copy where the CPU has that too), else the
+// long-double path; the test above checks whichever this machine runs. These check each path by
+// name, so every copy this CPU runs is held to the target (and the portable path everywhere).
 constexpr math::detail::PiKernel kKernelCopies[] = {math::detail::PiKernel::kAvx2Fma,
                                                     math::detail::PiKernel::kAvx512};
 
@@ -307,7 +308,7 @@ TEST(EllipticReference, PiAndFWithinTwoUlpOf50DigitsAtCorners) {
     std::printf("Kernel copies differ (by 1 ulp) on %d of %d samples\n", copies_differ, kSamples);
 }
 
-// The kernel's double-double elementary functions (elliptic_pi_dd_kernel.h), in every copy this
+// The kernel's double-double elementary functions (elliptic_pi_dd_kernel.inc), in every copy this
 // CPU runs, against cpp_bin_float_50.
 // Their error enters Pi once, scaled by at most ~1 (no cancellation between Pi's terms), so each
 // must stay well under a correctly rounded double's 2^-53. Bounds from their error analysis (the
@@ -393,9 +394,9 @@ TEST(EllipticReference, Float50TemplatesAgreeWithTablesTo1em40) {
   std::printf("cpp_bin_float_50 vs tables: worst relative %s\n", worst.str(4).c_str());
 }
 
-// The kernel's degree-9 series tails (elliptic.h) against 50-digit R_F and R_J, at A = 1 with
-// relative deviations of size delta in random directions. Their error is the truncation,
-// O(delta^10): halving delta divides its sum over the samples by 2^10 = 1024. A missing
+// The kernel's degree-9 series tails (lib/src/math/elliptic_pi_dd.h) against 50-digit R_F and
+// R_J, at A = 1 with relative deviations of size delta in random directions. Their error is the
+// truncation, O(delta^10): halving delta divides its sum over the samples by 2^10 = 1024. A missing
 // degree-9 term leaves O(delta^9), a ratio near 512 (zeroing R_F's E3^3 term: 550); so the test
 // asks for more than 2^9.5 = 724. A coefficient off by a few percent can pass (R_J's E4 E5 term
 // off by 3.5%: 893): the Pi tables then bound its effect. The degree-7 tails, O(delta^8), must show
