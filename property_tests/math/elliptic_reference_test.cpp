@@ -78,6 +78,60 @@ TEST(EllipticReference, FWithinTwoUlpOfTable) {
               (long long)plain.max, plain.rms(), plain.worst.c_str());
 }
 
+// F in double is faithfully rounded (below one ulp of the exact value) on both F tables: ours
+// (reference/elliptic_f.csv) and the inputs of Boost.Math's own ellint_1 test table
+// (reference/elliptic_f_boost_inputs.csv, 500 of 610 rows with phi beyond pi/2, up to 1185, so
+// the reduction of phi is held to it too). The error in fractional ulps is printed.
+TEST(EllipticReference, FFaithfullyRoundedOnBothTables) {
+  for (const char* name : {"elliptic_f.csv", "elliptic_f_boost_inputs.csv"}) {
+    double worst = 0, sum2 = 0;
+    std::string worst_row;
+    const auto rows = read_elliptic_table(name, 2);
+    for (const EllipticRow& row : rows) {
+      const double own = math::ellint_f(row.inputs[0], row.inputs[1]);
+      const RoundingError e = rounding_error(own, Real50(row.value));
+      sum2 += e.ulps * e.ulps;
+      if (e.ulps >= worst) {
+        worst = e.ulps;
+        worst_row = describe(row.inputs, own, row);
+      }
+      EXPECT_TRUE(e.faithful) << name << ": " << e.ulps << " ulp, "
+                              << describe(row.inputs, own, row);
+    }
+    std::printf("F faithful on %s: %zu rows, max %.3f ulp of the exact value, RMS %.3f, worst %s\n",
+                name, rows.size(), worst, std::sqrt(sum2 / double(rows.size())), worst_row.c_str());
+  }
+}
+
+// F's sin and cos in x87 long double (sincos_wide, elliptic_legendre.h) against 50 digits, on
+// [0, pi/2] and its ends. Bound: Taylor truncation below 2^-68, plus about a dozen long-double
+// roundings of 2^-64 on terms no larger than the value: 2^-60.
+TEST(EllipticReference, WideSinCosWithin2em60Of50Digits) {
+  if constexpr (std::numeric_limits<long double>::digits != 64) {
+    GTEST_SKIP() << "long double is not x87 extended here: sincos_wide uses libm";
+  } else {
+    namespace dom = elliptic_domain;
+    const Real50 kBound = Real50(std::ldexp(1.0, -60));
+    sequence::Pcg32 rng(2026, 12);
+    Real50 worst_s = 0, worst_c = 0;
+    for (int i = 0; i < 30000; ++i) {
+      const double phi = i < 2 ? (i == 0 ? dom::kHalfPi : std::ldexp(1.0, -1074))
+                               : dom::phi(i % dom::kPhiKinds, rng.next_double());
+      if (phi == 0) continue;
+      long double s, c;
+      math::detail::sincos_wide(static_cast<long double>(phi), s, c);
+      const Real50 P(phi), es = abs((Real50(s) - sin(P)) / sin(P)),
+                           ec = abs((Real50(c) - cos(P)) / cos(P));
+      worst_s = std::max(worst_s, es);
+      worst_c = std::max(worst_c, ec);
+      EXPECT_LE(es, kBound) << "sin phi=" << phi;
+      EXPECT_LE(ec, kBound) << "cos phi=" << phi;
+    }
+    std::printf("sincos_wide: max relative error sin %.2g, cos %.2g (bound 2^-60 = %.2g)\n",
+                double(worst_s), double(worst_c), std::ldexp(1.0, -60));
+  }
+}
+
 TEST(EllipticReference, PiWithinTwoUlpOfTable) {
   const auto rows = read_elliptic_table("elliptic_pi.csv", 3);
   UlpStats plain;

@@ -1,8 +1,9 @@
 #pragma once
 // Legendre's incomplete elliptic integrals F(phi|m) and Pi(n; phi|m), with the overloads that
-// take the complements 1 - m and 1 - n, and the cancellation-free forms built on them (D, E,
-// Pi - F, (1 - n) Pi - F, complete K and E), templated on the real type like Carlson's forms
-// (elliptic_carlson.h) they are computed from. elliptic.h includes both.
+// take the complements 1 - m and 1 - n, the complete integrals K(m) and Pi(n|m) at exactly
+// pi/2, and the cancellation-free forms built on them (D, E, Pi - F, (1 - n) Pi - F, complete
+// E), templated on the real type like Carlson's forms (elliptic_carlson.h) they are computed
+// from. elliptic.h includes both.
 //
 // CONVENTION (DESIGN.md section 3; parameter m, not modulus k):
 //   F(phi|m)     = int_0^phi dt / sqrt(1 - m sin^2 t)
@@ -14,10 +15,18 @@
 // never throw. Callers that know 1 - m or 1 - n more accurately than the subtraction would give
 // (m -> 1, n -> 1) pass the complements to the overloads that accept them.
 //
+// ANY FINITE phi (F and Pi; tested for accuracy too): the integrands are even and pi-periodic,
+// so F(-phi) = -F(phi) and F(phi + j pi) = F(phi) + 2j K(m), and the same for Pi with Pi(n|m).
+// phi is reduced modulo pi/2 in long double with pi/2 to 160 bits (detail::quadrant: exact to
+// 2^-63 relative below |phi| = 2^52), and the reduced part and the complete integral are added
+// before the one rounding: F stays faithfully rounded and Pi within 2 ulp at any phi
+// (EllipticComplete.FAndPiAtAnyPhiWithinTwoUlpOf50Digits, and on Boost's own ellint_1 inputs, phi
+// up to 1185: EllipticReference.FFaithfullyRoundedOnBothTables). Beyond |phi| = 1/eps = 2^52,
+// where the period is below an ulp of phi, the result is the mean growth 2 |phi| K / pi
+// (2 |phi| Pi(n|m) / pi). These are the semantics of Boost.Math's ellint_1 and ellint_3, in the
+// convention m = k^2.
+//
 // OUTSIDE THE DOMAIN (defined, not tested for accuracy):
-//  - phi outside [0, pi/2]: reduced with the exact identities F(-phi) = -F(phi) and
-//    F(phi + k pi) = F(phi) + 2k K(m) (same for Pi with its complete integral), so any finite
-//    phi gives the integral's value (rounding of the reduction by pi is not compensated);
 //  - m < 0 is valid for the integrals and computed by the same formulas;
 //  - m == 1 or n == 1: the integral is finite for phi < pi/2 and computed; it diverges at
 //    phi = pi/2 (returns +inf there when it can, a huge finite number otherwise);
@@ -33,8 +42,11 @@
 //              + sqrt(-n/((1-n)(m-n))) atan(sqrt(-n (m-n)/(1-n)) s c / Delta),
 //    three non-negative terms: no cancellation at any n < 0.
 //
-// PRECISION: the Carlson loops run in long double for Real = double (elliptic_carlson.h); F's
-// sin, cos stay in double, Pi's portable path computes them, R_C and atan in long double too.
+// PRECISION: the Carlson loops run in long double for Real = double (elliptic_carlson.h). F
+// carries s, c and the product s R_F in long double too (sincos_wide; s rounded to double alone
+// costs up to 1/2 ulp), so F is faithfully rounded, below 1 ulp of the exact value (max 0.52 on
+// both F tables: EllipticReference.FFaithfullyRoundedOnBothTables). Pi's portable path computes
+// s, c, R_C and atan in long double.
 //
 // FAST PATH (Pi in double only): on x86-64 CPUs with AVX2 and FMA (checked once at run time;
 // a second copy uses AVX-512VL where present), ellint_pi<double> with m in [0, 1] and phi in
@@ -75,24 +87,30 @@ inline void rf_rj_legendre(W c, W c2, W delta2, W p, W& rf, W& rj) {
   rf_rj_loop<Real>(c2, delta2, W(1), p, W(abs(c)), W(1), rf, rj);
 }
 
-// Shared inputs of the Legendre forms at phi in [0, pi/2]: s, c (in Real, from Real's sin/cos),
-// and c^2, Delta^2 = 1 - m s^2 in the working type.
+// Shared inputs of the Legendre forms at phi in [0, pi/2]: s, c, c^2 and Delta^2 = 1 - m s^2 in
+// the working type, from s and c given in W (legendre_args_from) or from Real's sin and cos of
+// phi (legendre_args: D, E and the difference forms).
 template <class W>
 struct LegendreArgs {
   W s, c, c2, delta2;
 };
 
-template <class Real, class W = work_t<Real>, bool kWideSinCos = false>
+template <class Real, class W>
+inline LegendreArgs<W> legendre_args_from(W s, W c, Real m, Real one_minus_m) {
+  LegendreArgs<W> a;
+  a.s = s;
+  a.c = c;
+  a.c2 = c * c;
+  // 1 - m s^2 cancels when m s^2 -> 1; c^2 + (1 - m) s^2 is then a sum of positive terms.
+  a.delta2 = (m <= Real(0.5)) ? 1 - W(m) * s * s : a.c2 + W(one_minus_m) * s * s;
+  return a;
+}
+
+template <class Real, class W = work_t<Real>>
 inline LegendreArgs<W> legendre_args(Real phi, Real m, Real one_minus_m) {
   using std::cos;
   using std::sin;
-  LegendreArgs<W> a;
-  a.s = kWideSinCos ? sin(W(phi)) : W(sin(phi));
-  a.c = kWideSinCos ? cos(W(phi)) : W(cos(phi));
-  a.c2 = a.c * a.c;
-  // 1 - m s^2 cancels when m s^2 -> 1; c^2 + (1 - m) s^2 is then a sum of positive terms.
-  a.delta2 = (m <= Real(0.5)) ? 1 - W(m) * a.s * a.s : a.c2 + W(one_minus_m) * a.s * a.s;
-  return a;
+  return legendre_args_from(W(sin(phi)), W(cos(phi)), m, one_minus_m);
 }
 
 // 1 - n s^2 (the R_J argument p), without cancellation as n -> 1.
@@ -106,13 +124,147 @@ inline bool in_phi_domain(Real phi) {
   return phi >= 0 && phi <= Real(std::numbers::pi_v<double>) / 2;
 }
 
+// pi/2 as p[0] + p[1] + p[2] + p[3] in the working type (Cody and Waite), for reducing phi: for
+// the built-in types p[0..2] carry 32 bits each and p[3] the next 53 (pi/2 to 2^-160), so the
+// products with an integer of 32 bits, or of 20 bits times 2^32, are exact in x87 long double.
+// Other types carry pi/2 whole.
+template <class W>
+struct HalfPiParts {
+  W p[4];
+  W half_pi;  // their sum, rounded
+};
+template <class W>
+inline const HalfPiParts<W>& half_pi_parts() {
+  if constexpr (std::is_floating_point_v<W>) {
+    static constexpr HalfPiParts<W> parts{
+        {W(0x1.921fb544p+0), W(0x1.0b4611a6p-34), W(0x1.3198a2ep-69), W(0x1.b839a252049c1p-104)},
+        W(0x1.921fb544p+0) + W(0x1.0b4611a6p-34)};
+    return parts;
+  } else {
+    using std::atan;
+    static const HalfPiParts<W> parts{{2 * atan(W(1)), W(0), W(0), W(0)}, 2 * atan(W(1))};
+    return parts;
+  }
+}
+
+// For x >= 0 below 2^52: q, the integer nearest x / (pi/2), returned, and t = x - q pi/2 with
+// |t| <= pi/4 (up to a rounding). With q = q_hi + q_lo (q_hi a multiple of 2^32 below 2^52,
+// q_lo < 2^32) the products with p[0..2] are exact (those with p[3], below 2^-100 x, round
+// harmlessly), and each subtraction is exact where the running value is within a factor 2 of
+// the term taken off (Sterbenz); where it is not, the running value is already of the size of
+// t. So t keeps a relative error near 2^-63 however close x comes to a multiple of pi/2: F and
+// Pi need that as sin t -> 0 at an odd multiple, where they are most sensitive for m -> 1.
+template <class W>
+inline W quadrant(W x, W& t) {
+  using std::floor;
+  using std::round;
+  const HalfPiParts<W>& hp = half_pi_parts<W>();
+  const W q = round(x / hp.half_pi);
+  const W q_hi = floor(q * W(0x1p-32)) * W(0x1p32), q_lo = q - q_hi;
+  t = x;
+  for (const W& p : hp.p)
+    t = (t - q_hi * p) - q_lo * p;
+  return q;
+}
+
+// sin and cos of t, |t| <= pi/4 (up to a rounding), in the working type. For x87 long double
+// (Real = double) by their Taylor series (A&S 4.3.65-66): through t^19 and t^18 the first
+// omitted terms are below 2^-71 and 2^-68 relative, and with the rounding of about a dozen
+// long-double steps the error stays below 2^-60, 1/128 of a double's ulp
+// (EllipticReference.WideSinCosWithin2em60Of50Digits). libm's sinl and cosl are as accurate but
+// several times slower; sin and cos in double cost F up to 1/2 ulp, and so its faithful
+// rounding. Other working types take their own sin and cos.
+template <class W>
+inline void sincos_quarter(W t, W& s, W& c) {
+  if constexpr (std::is_same_v<W, long double> && std::numeric_limits<W>::digits == 64) {
+    const W u = t * t;
+    // sin t = t + t u S(u), S = sum_{k=1..9} (-1)^k u^(k-1) / (2k+1)!;
+    // cos t = 1 - u/2 + u^2 C(u), C = sum_{k=2..9} (-1)^k u^(k-2) / (2k)!. Horner in u.
+    constexpr W kS[] = {W(-1) / 6,
+                        W(1) / 120,
+                        W(-1) / 5040,
+                        W(1) / 362880,
+                        W(-1) / 39916800,
+                        W(1) / 6227020800,
+                        W(-1) / 1307674368000,
+                        W(1) / 355687428096000,
+                        W(-1) / 121645100408832000};
+    constexpr W kC[] = {
+        W(1) / 24,        W(-1) / 720,         W(1) / 40320,          W(-1) / 3628800,
+        W(1) / 479001600, W(-1) / 87178291200, W(1) / 20922789888000, W(-1) / 6402373705728000};
+    // Their terms from u^2 on are below 5.2e-5 of sin t and 5.1e-6 of cos t at |t| = pi/4: in
+    // double (SSE, beside the x87 steps) their few roundings of 2^-53 cost below 2^-65 relative.
+    const double ud = static_cast<double>(u);
+    double Sd = static_cast<double>(kS[8]), Cd = static_cast<double>(kC[7]);
+    for (int k = 7; k >= 2; --k)
+      Sd = static_cast<double>(kS[k]) + ud * Sd;
+    for (int k = 6; k >= 2; --k)
+      Cd = static_cast<double>(kC[k]) + ud * Cd;
+    const W S = kS[0] + u * (kS[1] + u * W(Sd)), C = kC[0] + u * (kC[1] + u * W(Cd));
+    s = t + t * u * S;
+    c = (1 - u / 2) + u * u * C;
+  } else {
+    using std::cos;
+    using std::sin;
+    s = sin(t);
+    c = cos(t);
+  }
+}
+
+// sin and cos of phi in [0, pi/2]. For x87 long double: phi > pi/4 becomes t = phi - pi/2,
+// subtracting the parts of pi/2 in turn (the first exactly, by Sterbenz: t keeps a relative
+// accuracy near 2^-63, and cos phi = -sin t with it as phi -> pi/2), then sincos_quarter. Other
+// working types take their own sin and cos.
+template <class W>
+inline void sincos_wide(W phi, W& s, W& c) {
+  if constexpr (std::is_same_v<W, long double> && std::numeric_limits<W>::digits == 64) {
+    const bool reflect = phi > W(0x1.921fb54442d18p-1);  // fl(pi/4)
+    W t = phi;
+    if (reflect)
+      for (const W& p : half_pi_parts<W>().p)
+        t -= p;
+    W st, ct;
+    sincos_quarter(t, st, ct);
+    s = reflect ? ct : st;
+    c = reflect ? -st : ct;
+  } else {
+    using std::cos;
+    using std::sin;
+    s = sin(phi);
+    c = cos(phi);
+  }
+}
+
+// F from s = sin phi, c = cos phi (both >= 0) in the working type: s R_F(c^2, Delta^2, 1), with
+// the duplication loop and the product in W, rounded once by the caller.
+template <class Real, class W>
+inline W ellint_f_sc(W s, W c, Real m, Real one_minus_m) {
+  if (s == 0) return W(0);
+  const LegendreArgs<W> a = legendre_args_from(s, c, m, one_minus_m);
+  return a.s * rf_legendre<Real>(a.c, a.c2, a.delta2);
+}
+
+// F at phi in [0, pi/2], m <= 1, in the working type (s and c from sincos_wide).
+template <class Real, class W = work_t<Real>>
+inline W ellint_f_wide(W phi, Real m, Real one_minus_m) {
+  W s, c;
+  sincos_wide(phi, s, c);
+  if (s == 0) return phi;
+  return ellint_f_sc<Real>(s, c, m, one_minus_m);
+}
+
 // F at phi in [0, pi/2], m <= 1.
 template <class Real>
 inline Real ellint_f_core(Real phi, Real m, Real one_minus_m) {
   using W = work_t<Real>;
-  const LegendreArgs<W> a = legendre_args(phi, m, one_minus_m);
-  if (a.s == 0) return phi;
-  return static_cast<Real>(a.s * rf_legendre<Real>(a.c, a.c2, a.delta2));
+  return static_cast<Real>(ellint_f_wide<Real>(W(phi), m, one_minus_m));
+}
+
+// K(m) = R_F(0, 1 - m, 1) (DLMF 19.25.1) in the working type, m <= 1; +inf at m = 1.
+template <class Real, class W = work_t<Real>>
+inline W ellint_k_wide(Real one_minus_m) {
+  if (!(one_minus_m > 0)) return std::numeric_limits<W>::infinity();
+  return rf_loop<Real>(W(0), W(one_minus_m), W(1));
 }
 
 // The double-double kernel for Pi in double (see FAST PATH above). The copy in use, as
@@ -135,28 +287,26 @@ inline bool pi_dd_domain(double n, double one_minus_n, double phi, double m) {
   return pi_dd_domain(n, phi, m) && one_minus_n < std::numeric_limits<double>::infinity();
 }
 
-// Pi at phi in [0, pi/2], m <= 1, n <= 1, with the Carlson loops in work_t<Real> (for double:
-// long double where it is wider) on every machine.
-template <class Real>
-inline Real ellint_pi_portable(Real n, Real one_minus_n, Real phi, Real m, Real one_minus_m) {
-  using W = work_t<Real>;
+// The portable path: Pi at phi in [0, pi/2], m <= 1, n <= 1, with the Carlson loops in
+// work_t<Real> (for double: long double where it is wider) on every machine. This form takes
+// s = sin phi, c = cos phi (both >= 0) in W and returns the value in W (the reduction of phi
+// adds to it). n = 0 is F itself (Pi(0; phi|m) = F).
+template <class Real, class W>
+inline W ellint_pi_portable_sc(Real n, Real one_minus_n, W s, W c, Real m, Real one_minus_m) {
   using std::atan;
   using std::sqrt;
-  if (n == 0) return ellint_f_core(phi, m, one_minus_m);  // exactly F (Pi(0; phi|m) = F)
-  // s and c in W: at the corners (phi -> pi/2 with m, n -> 1) Pi amplifies their rounding in
-  // Real past 2 ulp (measured: 3 ulp on random samples against 50 digits).
-  const LegendreArgs<W> a = legendre_args<Real, W, true>(phi, m, one_minus_m);
-  if (a.s == 0) return phi;
+  if (n == 0) return ellint_f_sc<Real>(s, c, m, one_minus_m);
+  const LegendreArgs<W> a = legendre_args_from(s, c, m, one_minus_m);
   const W s3 = a.s * a.s * a.s;
   const Real N = (m - n) / one_minus_n;  // the transformed characteristic for n < 0
   if (n > 0 || !(N > 0)) {
     // Direct: Pi = s R_F + (n/3) s^3 R_J(c^2, Delta^2, 1, 1 - n s^2); the terms have equal
     // signs for n > 0 (the m < 0 fallback for n < 0 accepts some cancellation).
     const W p = one_minus_n_s2(n, one_minus_n, a);
-    if (!(p > 0)) return std::numeric_limits<Real>::infinity();  // n == 1 at phi == pi/2
+    if (!(p > 0)) return std::numeric_limits<W>::infinity();  // n == 1 at phi == pi/2
     W rf, rj;
     rf_rj_legendre<Real>(a.c, a.c2, a.delta2, p, rf, rj);
-    return static_cast<Real>(a.s * rf + W(n) * (W(1) / 3) * s3 * rj);
+    return a.s * rf + W(n) * (W(1) / 3) * s3 * rj;
   }
   // n < 0, N = (m - n)/(1 - n) in (0, 1): A&S 17.7.15 rearranged into three non-negative terms
   // (see the header comment). 1 - N = (1 - m)/(1 - n) and 1 - N s^2 = c^2 + (1 - N) s^2.
@@ -171,7 +321,48 @@ inline Real ellint_pi_portable(Real n, Real one_minus_n, Real phi, Real m, Real 
   const W term_j = w * one_minus_N * (W(1) / 3) * s3 * rj;
   const W arg = sw * smn * a.s * a.c / sqrt(a.delta2);
   const W term_atan = (sw / smn) * atan(arg);
-  return static_cast<Real>(a.s * rf * inv_one_minus_n + term_j + term_atan);
+  return a.s * rf * inv_one_minus_n + term_j + term_atan;
+}
+
+// The same at phi in [0, pi/2] in W. s and c in W (libm's sinl, cosl for long double): at the
+// corners (phi -> pi/2 with m, n -> 1) Pi amplifies their rounding in Real past 2 ulp (measured: 3
+// ulp on random samples against 50 digits).
+template <class Real, class W = work_t<Real>>
+inline W ellint_pi_portable_wide(Real n, Real one_minus_n, W phi, Real m, Real one_minus_m) {
+  using std::cos;
+  using std::sin;
+  if (n == 0) return ellint_f_wide<Real>(phi, m, one_minus_m);  // exactly F (Pi(0; phi|m) = F)
+  const W s = sin(phi);
+  if (s == 0) return phi;
+  return ellint_pi_portable_sc<Real>(n, one_minus_n, s, W(cos(phi)), m, one_minus_m);
+}
+
+template <class Real>
+inline Real ellint_pi_portable(Real n, Real one_minus_n, Real phi, Real m, Real one_minus_m) {
+  using W = work_t<Real>;
+  return static_cast<Real>(ellint_pi_portable_wide<Real>(n, one_minus_n, W(phi), m, one_minus_m));
+}
+
+// Pi(n|m) = Pi(n; pi/2|m) in the working type, m <= 1, n <= 1, from Carlson's complete forms
+// (DLMF 19.25.2): K + (n/3) R_J(0, 1 - m, 1, 1 - n) for n > 0; for n < 0 the same
+// transformation as the incomplete Pi, whose atan term vanishes at phi = pi/2 (c = 0):
+// K/(1 - n) + (-n (1-m) / (3 (1-n)^2)) R_J(0, 1 - m, 1, 1 - N), two positive terms. +inf where
+// the integral diverges (m = 1 or n = 1).
+template <class Real, class W = work_t<Real>>
+inline W ellint_pi_complete_wide(Real n, Real one_minus_n, Real m, Real one_minus_m) {
+  if (!(one_minus_m > 0) || !(one_minus_n > 0)) return std::numeric_limits<W>::infinity();
+  if (n == 0) return ellint_k_wide<Real>(one_minus_m);
+  W rf, rj;
+  const Real N = (m - n) / one_minus_n;
+  if (n > 0 || !(N > 0)) {
+    rf_rj_loop<Real>(W(0), W(one_minus_m), W(1), W(one_minus_n), rf, rj);
+    return rf + W(n) * (W(1) / 3) * rj;
+  }
+  const W inv_one_minus_n = 1 / W(one_minus_n);
+  const W one_minus_N = W(one_minus_m) * inv_one_minus_n;
+  rf_rj_loop<Real>(W(0), W(one_minus_m), W(1), one_minus_N, rf, rj);
+  const W w = W(-n) * inv_one_minus_n;
+  return rf * inv_one_minus_n + w * one_minus_N * (W(1) / 3) * rj;
 }
 
 // Pi at phi in [0, pi/2], m <= 1, n <= 1. The *_lo arguments (double only) are the rounding
@@ -186,19 +377,43 @@ inline Real ellint_pi_core(Real n, Real one_minus_n, Real phi, Real m, Real one_
   return ellint_pi_portable(n, one_minus_n, phi, m, one_minus_m);
 }
 
-// Reduction of any finite phi to [0, pi/2]: phi = k pi + r with |r| <= pi/2, then
-// I(phi) = 2k I_complete + sign(r) I(|r|) for I = F or Pi (the integrands are even and
-// pi-periodic).
+// I(phi) for any finite phi, I = F or Pi, from core(s, c) = I at the angle with sine s >= 0 and
+// cosine c >= 0, and complete() = I(pi/2), both in the working type. The integrands are even and
+// pi-periodic, so I is odd and I(j pi + r) = 2j I(pi/2) + I(r). With phi = q pi/2 + t,
+// |t| <= pi/4 (quadrant):
+//   q even: I = q I(pi/2) + sign(t) I(|t|);
+//   q odd:  I = (q + 1) I(pi/2) - I(pi/2 - t) for t >= 0, (q - 1) I(pi/2) + I(pi/2 + t) for t < 0,
+// with the sine and cosine of pi/2 -+ t read off those of t (no cancellation: the first form is
+// at least I(pi/2)). As Boost.Math does, beyond |phi| = 1/eps (where an ulp of phi exceeds 1/2
+// and phi carries no information about its position in the period) the result is the mean
+// growth 2 |phi| I(pi/2) / pi, within 1/(4j) relative of I at any phi that ulp covers. NaN for
+// non-finite phi; one rounding to Real at the end.
 template <class Real, class Core, class Complete>
 inline Real reduce_phi(Real phi, Core core, Complete complete) {
+  using W = work_t<Real>;
   using std::abs;
-  using std::round;
-  const Real pi = Real(std::numbers::pi_v<double>);
-  if (!(abs(phi) < std::numeric_limits<Real>::infinity())) return quiet_nan<Real>();
-  const Real k = round(phi / pi);
-  const Real r = phi - k * pi;
-  const Real part = r < 0 ? -core(-r) : core(r);
-  return k == 0 ? part : 2 * k * complete() + part;
+  using std::fmod;
+  const Real a = abs(phi);
+  if (!(a < std::numeric_limits<Real>::infinity())) return quiet_nan<Real>();
+  const W x = W(a);
+  W value;
+  if (a > 1 / std::numeric_limits<Real>::epsilon()) {
+    value = x * complete() / half_pi_parts<W>().half_pi;
+  } else {
+    W t, s, c;
+    const W q = quadrant(x, t);
+    sincos_quarter(t, s, c);
+    if (fmod(q, W(2)) == 0) {
+      const W part = t < 0 ? W(-core(W(-s), c)) : W(core(s, c));
+      value = q == 0 ? part : q * complete() + part;
+    } else if (t >= 0) {
+      value = (q + 1) * complete() - core(c, s);
+    } else {
+      const W part = core(c, W(-s));
+      value = q == 1 ? part : (q - 1) * complete() + part;
+    }
+  }
+  return phi < 0 ? -static_cast<Real>(value) : static_cast<Real>(value);
 }
 
 }  // namespace detail
@@ -206,11 +421,13 @@ inline Real reduce_phi(Real phi, Core core, Complete complete) {
 // F(phi|m) with the complement 1 - m supplied by the caller (exact near m -> 1).
 template <class Real>
 inline Real ellint_f(Real phi, Real m, Real one_minus_m) {
+  using W = detail::work_t<Real>;
   if (!(m <= 1) || !(one_minus_m >= 0)) return detail::quiet_nan<Real>();
   if (detail::in_phi_domain(phi)) return detail::ellint_f_core(phi, m, one_minus_m);
+  if (detail::in_phi_domain(-phi)) return -detail::ellint_f_core(-phi, m, one_minus_m);  // odd
   return detail::reduce_phi(
-      phi, [&](Real r) { return detail::ellint_f_core(r, m, one_minus_m); },
-      [&] { return carlson_rf(Real(0), one_minus_m, Real(1)); });
+      phi, [&](W s, W c) { return detail::ellint_f_sc<Real>(s, c, m, one_minus_m); },
+      [&] { return detail::ellint_k_wide<Real>(one_minus_m); });
 }
 
 // F(phi|m) = int_0^phi dt / sqrt(1 - m sin^2 t).
@@ -224,12 +441,19 @@ template <class Real>
 inline Real ellint_pi(Real n, Real one_minus_n, Real phi, Real m, Real one_minus_m) {
   if (!(m <= 1) || !(one_minus_m >= 0) || !(n <= 1) || !(one_minus_n >= 0))
     return detail::quiet_nan<Real>();
+  using W = detail::work_t<Real>;
   if (detail::in_phi_domain(phi))
     return detail::ellint_pi_core(n, one_minus_n, phi, m, one_minus_m);
-  const Real half_pi = Real(std::numbers::pi_v<double>) / 2;
+  if (detail::in_phi_domain(-phi))  // odd
+    return -detail::ellint_pi_core(n, one_minus_n, -phi, m, one_minus_m);
+  // Beyond [0, pi/2] the reduced part and the complete integral stay in W (the portable path's
+  // loops), so the sum is rounded once.
   return detail::reduce_phi(
-      phi, [&](Real r) { return detail::ellint_pi_core(n, one_minus_n, r, m, one_minus_m); },
-      [&] { return detail::ellint_pi_core(n, one_minus_n, half_pi, m, one_minus_m); });
+      phi,
+      [&](W s, W c) {
+        return detail::ellint_pi_portable_sc<Real>(n, one_minus_n, s, c, m, one_minus_m);
+      },
+      [&] { return detail::ellint_pi_complete_wide<Real>(n, one_minus_n, m, one_minus_m); });
 }
 
 // Pi(n; phi|m) = int_0^phi dt / ((1 - n sin^2 t) sqrt(1 - m sin^2 t)).
@@ -243,8 +467,41 @@ inline Real ellint_pi(Real n, Real phi, Real m) {
       if (kernel != nullptr && detail::pi_dd_domain(n, phi, m)) return kernel(n, phi, m);
       return detail::ellint_pi_portable(n, 1 - n, phi, m, 1 - m);
     }
+    if (m <= 1 && n <= 1 && detail::in_phi_domain(-phi)) return -ellint_pi(n, -phi, m);  // odd
   }
   return ellint_pi(n, Real(1 - n), phi, m, Real(1 - m));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Complete integrals at exactly phi = pi/2, not at fl(pi/2) = pi/2 - 6.1e-17: the integrals
+// differ by about 6.1e-17 / ((1 - n) sqrt(1 - m)), which near n, m -> 1 is many ulps (millions
+// at n = 1 - 2^-53: EllipticComplete.KAndPiWithinTwoUlpOf50DigitBoost prints it).
+
+// K(m) = F(pi/2|m) = R_F(0, 1 - m, 1) (DLMF 19.25.1), with the complement 1 - m supplied.
+// m <= 1 (m < 0 included); +inf at m = 1; NaN outside.
+template <class Real>
+inline Real ellint_k(Real m, Real one_minus_m) {
+  if (!(m <= 1) || !(one_minus_m >= 0)) return detail::quiet_nan<Real>();
+  return static_cast<Real>(detail::ellint_k_wide<Real>(one_minus_m));
+}
+template <class Real>
+inline Real ellint_k(Real m) {
+  return ellint_k(m, Real(1 - m));
+}
+
+// Pi(n|m) = Pi(n; pi/2|m) = R_F(0, 1 - m, 1) + (n/3) R_J(0, 1 - m, 1, 1 - n) (DLMF 19.25.2),
+// with both complements supplied (exact near n, m -> 1); for n < 0 computed without
+// cancellation (detail::ellint_pi_complete_wide). m <= 1, n <= 1; +inf at m = 1 or n = 1; NaN
+// outside.
+template <class Real>
+inline Real ellint_pi_complete(Real n, Real one_minus_n, Real m, Real one_minus_m) {
+  if (!(m <= 1) || !(one_minus_m >= 0) || !(n <= 1) || !(one_minus_n >= 0))
+    return detail::quiet_nan<Real>();
+  return static_cast<Real>(detail::ellint_pi_complete_wide<Real>(n, one_minus_n, m, one_minus_m));
+}
+template <class Real>
+inline Real ellint_pi_complete(Real n, Real m) {
+  return ellint_pi_complete(n, Real(1 - n), m, Real(1 - m));
 }
 
 // ---------------------------------------------------------------------------------------------
