@@ -25,7 +25,6 @@
 #include "command.h"
 #include "common/args.h"
 #include "common/output.h"
-#include "disklab/math/constants.h"
 #include "disklab/math/elliptic.h"
 #include "reference_csv.h"
 

@@ -1,6 +1,7 @@
 // Own F and Pi against the committed 50-digit tables (reference/elliptic_*.csv, made by
 // tanh-sinh quadrature, independent of Carlson): in double to within kMaxUlp of the correctly
-// rounded value, and the same templates in cpp_bin_float_50 to kHighPrecisionRelative.
+// rounded value (F also faithfully rounded, there and at Boost.Math's own ellint_1 test inputs),
+// and the same templates in cpp_bin_float_50 to kHighPrecisionRelative.
 #include <gtest/gtest.h>
 
 #include <array>

@@ -131,7 +131,7 @@ inline bool in_phi_domain(Real phi) {
 template <class W>
 struct HalfPiParts {
   W p[4];
-  W half_pi;  // their sum, rounded
+  W half_pi;  // p[0] + p[1], rounded: enough to choose the quadrant
 };
 template <class W>
 inline const HalfPiParts<W>& half_pi_parts() {
