@@ -16,7 +16,7 @@
 //  - mixed: all three bands interleaved (branch patterns of a real caller);
 //  - n>0, -1<=n<0, n<-1: one band each (Pi only: its n < 0 path has an extra atan).
 // Pi/mixed/own is ellint_pi<double> as a caller gets it: on a CPU with AVX2 and FMA its
-// double-double kernel (lib/src/math/elliptic_pi_dd_kernel.h; the AVX-512VL copy where the CPU
+// double-double kernel (lib/src/math/elliptic_pi_dd_kernel.inc; the AVX-512VL copy where the CPU
 // has it), else the long-double path; Pi/mixed/own-portable always times the long-double path
 // (ellint_pi_portable), Pi/mixed/own-avx2 ellint_pi<double> with the kernel's AVX2+FMA copy in
 // use (what CPUs without AVX-512VL run; registered where this CPU runs it). The summary says which
@@ -50,6 +50,7 @@
 #include "bench_common.h"
 #include "disklab/math/elliptic.h"
 #include "disklab/sequence/random.h"
+#include "math/elliptic_pi_dd.h"  // lib/src: the Pi kernel's private hooks
 
 namespace {
 namespace dm = disklab::math;
@@ -109,8 +110,8 @@ double seconds(Clock::time_point a, Clock::time_point b) {
 enum class Fn { kF, kPi, kRF, kRJ };
 enum class Impl { kOwn, kBoostDouble, kBoostDefault, kOwnDoubleLoop, kOwnPortable, kOwnAvx2 };
 
-// Pi as elliptic.h computes it, but with the duplication loop in double instead of long double:
-// the speed side of the accuracy trade-off (not a library function: in double the loop's
+// Pi as elliptic_legendre.h computes it, but with the duplication loop in double instead of long
+// double: the speed side of the accuracy trade-off (not a library function: in double the loop's
 // rounding, mostly that of the square roots, the lambda_k and the d_k, reaches 4 ulp on the
 // 50-digit tables (21 of 2130 Pi rows above 2 ulp), above the 2-ulp promise).
 double pi_double_loop(double n, double phi, double m) {

@@ -15,6 +15,7 @@
 
 #include "disklab/math/elliptic.h"
 #include "math/elliptic_domain.h"
+#include "math/elliptic_pi_dd.h"  // lib/src: the Pi kernel's private hooks
 
 namespace disklab::test {
 namespace {

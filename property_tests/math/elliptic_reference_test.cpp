@@ -1,6 +1,7 @@
 // Own F and Pi against the committed 50-digit tables (reference/elliptic_*.csv, made by
 // tanh-sinh quadrature, independent of Carlson): in double to within kMaxUlp of the correctly
-// rounded value, and the same templates in cpp_bin_float_50 to kHighPrecisionRelative.
+// rounded value (F also faithfully rounded, there and at Boost.Math's own ellint_1 test inputs),
+// and the same templates in cpp_bin_float_50 to kHighPrecisionRelative.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -16,6 +17,7 @@
 #include "disklab/math/elliptic.h"
 #include "disklab/sequence/random.h"
 #include "math/elliptic_domain.h"
+#include "math/elliptic_pi_dd.h"  // lib/src: the Pi kernel's private hooks
 #include "math/elliptic_tables.h"
 
 namespace disklab::test {
@@ -77,6 +79,60 @@ TEST(EllipticReference, FWithinTwoUlpOfTable) {
               (long long)plain.max, plain.rms(), plain.worst.c_str());
 }
 
+// F in double is faithfully rounded (below one ulp of the exact value) on both F tables: ours
+// (reference/elliptic_f.csv) and the inputs of Boost.Math's own ellint_1 test table
+// (reference/elliptic_f_boost_inputs.csv, 500 of 610 rows with phi beyond pi/2, up to 1185, so
+// the reduction of phi is held to it too). The error in fractional ulps is printed.
+TEST(EllipticReference, FFaithfullyRoundedOnBothTables) {
+  for (const char* name : {"elliptic_f.csv", "elliptic_f_boost_inputs.csv"}) {
+    double worst = 0, sum2 = 0;
+    std::string worst_row;
+    const auto rows = read_elliptic_table(name, 2);
+    for (const EllipticRow& row : rows) {
+      const double own = math::ellint_f(row.inputs[0], row.inputs[1]);
+      const RoundingError e = rounding_error(own, Real50(row.value));
+      sum2 += e.ulps * e.ulps;
+      if (e.ulps >= worst) {
+        worst = e.ulps;
+        worst_row = describe(row.inputs, own, row);
+      }
+      EXPECT_TRUE(e.faithful) << name << ": " << e.ulps << " ulp, "
+                              << describe(row.inputs, own, row);
+    }
+    std::printf("F faithful on %s: %zu rows, max %.3f ulp of the exact value, RMS %.3f, worst %s\n",
+                name, rows.size(), worst, std::sqrt(sum2 / double(rows.size())), worst_row.c_str());
+  }
+}
+
+// F's sin and cos in x87 long double (sincos_wide, elliptic_legendre.h) against 50 digits, on
+// [0, pi/2] and its ends. Bound: Taylor truncation below 2^-68, plus about a dozen long-double
+// roundings of 2^-64 on terms no larger than the value: 2^-60.
+TEST(EllipticReference, WideSinCosWithin2em60Of50Digits) {
+  if constexpr (std::numeric_limits<long double>::digits != 64) {
+    GTEST_SKIP() << "long double is not x87 extended here: sincos_wide uses libm";
+  } else {
+    namespace dom = elliptic_domain;
+    const Real50 kBound = Real50(std::ldexp(1.0, -60));
+    sequence::Pcg32 rng(2026, 12);
+    Real50 worst_s = 0, worst_c = 0;
+    for (int i = 0; i < 30000; ++i) {
+      const double phi = i < 2 ? (i == 0 ? dom::kHalfPi : std::ldexp(1.0, -1074))
+                               : dom::phi(i % dom::kPhiKinds, rng.next_double());
+      if (phi == 0) continue;
+      long double s, c;
+      math::detail::sincos_wide(static_cast<long double>(phi), s, c);
+      const Real50 P(phi), es = abs((Real50(s) - sin(P)) / sin(P)),
+                           ec = abs((Real50(c) - cos(P)) / cos(P));
+      worst_s = std::max(worst_s, es);
+      worst_c = std::max(worst_c, ec);
+      EXPECT_LE(es, kBound) << "sin phi=" << phi;
+      EXPECT_LE(ec, kBound) << "cos phi=" << phi;
+    }
+    std::printf("sincos_wide: max relative error sin %.2g, cos %.2g (bound 2^-60 = %.2g)\n",
+                double(worst_s), double(worst_c), std::ldexp(1.0, -60));
+  }
+}
+
 TEST(EllipticReference, PiWithinTwoUlpOfTable) {
   const auto rows = read_elliptic_table("elliptic_pi.csv", 3);
   UlpStats plain;
@@ -94,10 +150,10 @@ TEST(EllipticReference, PiWithinTwoUlpOfTable) {
               (long long)plain.max, plain.rms(), plain.worst.c_str());
 }
 
-// ellint_pi<double> runs the double-double kernel where the CPU has AVX2 and FMA (elliptic.h,
-// FAST PATH; its AVX-512VL copy where the CPU has that too), else the long-double path; the
-// test above checks whichever this machine runs. These check each path by name, so every copy
-// this CPU runs is held to the target (and the portable path everywhere).
+// ellint_pi<double> runs the double-double kernel where the CPU has AVX2 and FMA
+// (elliptic_legendre.h, FAST PATH; its AVX-512VL copy where the CPU has that too), else the
+// long-double path; the test above checks whichever this machine runs. These check each path by
+// name, so every copy this CPU runs is held to the target (and the portable path everywhere).
 constexpr math::detail::PiKernel kKernelCopies[] = {math::detail::PiKernel::kAvx2Fma,
                                                     math::detail::PiKernel::kAvx512};
 
@@ -158,14 +214,31 @@ TEST(EllipticReference, PiDoubleDoubleKernelWithinTwoUlpOfTable) {
   }
 }
 
+// The copy this CPU should run, from its features read directly (not through the library's
+// predicate): the copies are compiled for AVX2 + FMA and for AVX2 + FMA + AVX-512F/VL
+// (elliptic_pi_dd_avx2.cpp, elliptic_pi_dd_avx512.cpp), on x86-64 with GCC or Clang only.
+math::detail::PiKernel expected_best_kernel() {
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+  __builtin_cpu_init();
+  const bool avx2_fma = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  const bool avx512vl = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl");
+  if (avx2_fma && avx512vl) return math::detail::PiKernel::kAvx512;
+  if (avx2_fma) return math::detail::PiKernel::kAvx2Fma;
+#endif
+  return math::detail::PiKernel::kNone;
+}
+
 // ellint_pi<double> runs the best copy this CPU supports, and only supported copies answer.
 TEST(EllipticReference, PiRunsTheBestSupportedKernel) {
   namespace d = math::detail;
-  const auto kernels = supported_kernels();
-  const d::PiKernel best = kernels.empty() ? d::PiKernel::kNone : kernels.back();
-  EXPECT_EQ(d::pi_dd_kernel(), best) << d::pi_dd_kernel_name(d::pi_dd_kernel());
+  const d::PiKernel best = expected_best_kernel();
+  EXPECT_EQ(d::pi_dd_kernel(), best) << "runs " << d::pi_dd_kernel_name(d::pi_dd_kernel())
+                                     << ", the CPU's features say " << d::pi_dd_kernel_name(best);
   EXPECT_EQ(d::pi_dd_kernel_available(), best != d::PiKernel::kNone);
   EXPECT_FALSE(d::pi_dd_kernel_supported(d::PiKernel::kNone));
+  // The AVX2 + FMA copy runs wherever the AVX-512VL one does (its instruction sets are a subset).
+  EXPECT_EQ(d::pi_dd_kernel_supported(d::PiKernel::kAvx2Fma), best != d::PiKernel::kNone);
+  EXPECT_EQ(d::pi_dd_kernel_supported(d::PiKernel::kAvx512), best == d::PiKernel::kAvx512);
   std::printf("Pi kernel in use: %s\n", d::pi_dd_kernel_name(best));
   // ellint_pi's result is the kernel's, bit for bit. The portable path's differs in the last bit
   // on some of these inputs (counted), so this shows that the kernel runs; which copy runs is
@@ -307,7 +380,7 @@ TEST(EllipticReference, PiAndFWithinTwoUlpOf50DigitsAtCorners) {
     std::printf("Kernel copies differ (by 1 ulp) on %d of %d samples\n", copies_differ, kSamples);
 }
 
-// The kernel's double-double elementary functions (elliptic_pi_dd_kernel.h), in every copy this
+// The kernel's double-double elementary functions (elliptic_pi_dd_kernel.inc), in every copy this
 // CPU runs, against cpp_bin_float_50.
 // Their error enters Pi once, scaled by at most ~1 (no cancellation between Pi's terms), so each
 // must stay well under a correctly rounded double's 2^-53. Bounds from their error analysis (the
@@ -393,9 +466,9 @@ TEST(EllipticReference, Float50TemplatesAgreeWithTablesTo1em40) {
   std::printf("cpp_bin_float_50 vs tables: worst relative %s\n", worst.str(4).c_str());
 }
 
-// The kernel's degree-9 series tails (elliptic.h) against 50-digit R_F and R_J, at A = 1 with
-// relative deviations of size delta in random directions. Their error is the truncation,
-// O(delta^10): halving delta divides its sum over the samples by 2^10 = 1024. A missing
+// The kernel's degree-9 series tails (lib/src/math/elliptic_pi_dd.h) against 50-digit R_F and
+// R_J, at A = 1 with relative deviations of size delta in random directions. Their error is the
+// truncation, O(delta^10): halving delta divides its sum over the samples by 2^10 = 1024. A missing
 // degree-9 term leaves O(delta^9), a ratio near 512 (zeroing R_F's E3^3 term: 550); so the test
 // asks for more than 2^9.5 = 724. A coefficient off by a few percent can pass (R_J's E4 E5 term
 // off by 3.5%: 893): the Pi tables then bound its effect. The degree-7 tails, O(delta^8), must show

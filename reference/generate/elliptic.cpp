@@ -5,109 +5,34 @@
 // in boost::multiprecision::cpp_bin_float_50.
 //
 // Inputs are doubles (printed %.17g, so they read back exactly); where m or n is close to 1 it
-// is 1 - k 2^-53 so that 1 - m, 1 - n are exact doubles too. The integrand is evaluated with
-// t and pi/2 - t both known to full precision (tanh-sinh hands over the distance to the nearest
-// endpoint; pi/2 - phi comes from a 100-digit pi), so 1 - m sin^2 t = (1 - m) + m cos^2 t keeps
-// every digit near the m -> 1, phi -> pi/2 singularity.
+// is 1 - k 2^-53 so that 1 - m, 1 - n are exact doubles too. The quadrature and how it keeps
+// every digit at the singular corner: legendre_quadrature.h.
 //
 // Usage: reference_elliptic OUT_DIR   (writes OUT_DIR/elliptic_f.csv and elliptic_pi.csv)
 // The row set is deterministic (fixed seed); see reference/README.md.
 #include <algorithm>
-#include <boost/math/constants/constants.hpp>
-#include <boost/math/quadrature/tanh_sinh.hpp>
-#include <boost/multiprecision/cpp_bin_float.hpp>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
-#include <iomanip>
 #include <random>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "legendre_quadrature.h"
+
 namespace {
 
-using Real = boost::multiprecision::cpp_bin_float_50;
-using Wide = boost::multiprecision::cpp_bin_float_100;
-
-// Tanh-sinh roughly doubles the number of correct digits per level, so when two levels agree
-// to 1e-40 the last one is good to far beyond the 45 digits written. The run aborts rather than
-// write a row whose level-to-level difference is above kMaxEstimate.
-const Real kTolerance = Real(1e-40);
-const Real kMaxEstimate = Real(1e-36);
+using namespace disklab::reference_generate;
 
 const double kHalfPi = 1.5707963267948966;  // fl(pi/2), below pi/2
 
 struct Row {
   double n, phi, m;  // n unused for F
 };
-
-// 1 - X sin^2 t, accurate both for X far from 1 and for X -> 1 with t -> pi/2.
-Real one_minus_x_sin2(const Real& X, const Real& s, const Real& c) {
-  if (X > 0.5) return (1 - X) + X * c * c;
-  return 1 - X * s * s;
-}
-
-struct Quadrature {
-  boost::math::quadrature::tanh_sinh<Real> ts{20};
-
-  // int_0^phi g(s, c) dt, s = sin t, c = cos t. `w_left` and `w_right` are the widths of the
-  // integrand's features at t = 0 (large negative n: 1/sqrt(-n)) and at t = pi/2 (m or n -> 1:
-  // sqrt(1 - m), sqrt(1 - n)). Tanh-sinh can declare convergence before it resolves a feature
-  // many decades narrower than the interval, so the interval is cut at distances 10^-j from
-  // the feature's end, down to a tenth of its width: every piece is then smooth on its scale.
-  template <class G>
-  Real integrate(double phi_d, G g, double w_left, double w_right) {
-    const Real phi = phi_d;
-    const Real delta = Real(boost::math::constants::half_pi<Wide>() - Wide(phi_d));  // pi/2 - phi
-    // Breakpoints as (t, u = pi/2 - t), both exact to working precision.
-    std::vector<std::pair<Real, Real>> cuts{{Real(0), delta + phi}};
-    for (double d = 0.1; d > w_left / 10 && d > 1e-300; d /= 10)
-      if (d < 0.5 * phi_d) cuts.push_back({Real(d), delta + (phi - Real(d))});
-    for (double d = 0.1; d > w_right / 10 && d > 1e-300; d /= 10)
-      if (Real(d) > delta && Real(d) - delta < 0.5 * phi)
-        cuts.push_back({phi - (Real(d) - delta), Real(d)});
-    cuts.push_back({phi, delta});
-    std::sort(cuts.begin(), cuts.end());
-    Real total = 0;
-    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-      const auto [ta, ua] = cuts[i];
-      const auto [tb, ub] = cuts[i + 1];
-      const Real L = tb - ta;
-      if (!(L > 0)) continue;
-      // v in [0, 1]; vc is the signed distance from v to the nearest end (a - v or b - v).
-      auto f = [&](const Real& v, const Real& vc) {
-        if (v < 0.5) return L * g(sin(ta + L * abs(vc)), sin(ua - L * abs(vc)));
-        return L * g(sin(tb - L * abs(vc)), sin(ub + L * abs(vc)));
-      };
-      Real error = 0;
-      const Real q = ts.integrate(f, Real(0), Real(1), kTolerance, &error);
-      if (!(error <= kMaxEstimate * abs(q))) {
-        std::ostringstream os;
-        os << "quadrature did not converge: phi=" << phi_d << " piece " << i
-           << " rel.err=" << error / abs(q);
-        throw std::runtime_error(os.str());
-      }
-      total += q;
-    }
-    return total;
-  }
-};
-
-std::string fmt17(double v) {
-  char buf[40];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
-std::string fmt_real(const Real& v) {
-  std::ostringstream os;
-  os << std::setprecision(45) << std::scientific << v;
-  return os.str();
-}
 
 // m close to 1 with an exact complement: 1 - k 2^-53, k >= 1.
 double one_minus_exact(double complement) {

@@ -16,6 +16,7 @@
 
 #include "common/output.h"
 #include "disklab/math/elliptic.h"
+#include "math/elliptic_pi_dd.h"  // lib/src: the Pi kernel's private hooks
 #include "reference_csv.h"
 
 namespace disklab::cli {

@@ -1,4 +1,4 @@
-// Which compiled copy of the double-double Pi kernel (elliptic_pi_dd_kernel.h) runs: the best
+// Which compiled copy of the double-double Pi kernel (elliptic_pi_dd_kernel.inc) runs: the best
 // this CPU supports, chosen once during static initialisation.
 #include <limits>
 

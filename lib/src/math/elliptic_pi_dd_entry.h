@@ -1,9 +1,9 @@
 // The entry points of the two compiled copies of the double-double Pi kernel
-// (elliptic_pi_dd_kernel.h): pi_avx2 (AVX2 + FMA) and pi_avx512 (the same plus AVX-512VL).
+// (elliptic_pi_dd_kernel.inc): pi_avx2 (AVX2 + FMA) and pi_avx512 (the same plus AVX-512VL).
 // Private to lib/src/math; elliptic_pi_dd.cpp dispatches to them.
 #pragma once
 
-#include "disklab/math/elliptic.h"
+#include "elliptic_pi_dd.h"
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define DISKLAB_PI_DD 1
