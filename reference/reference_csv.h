@@ -86,6 +86,36 @@ inline int64_t ulp_distance(double a, double b) {
   return key(a) - key(b);
 }
 
+// One row of elliptic_f.csv (phi, m, F), elliptic_pi.csv (n, phi, m, Pi) or a table of the same
+// shape: the inputs, and the 45-digit value as text (parse it at any precision) and rounded.
+struct EllipticRow {
+  std::vector<double> inputs;
+  std::string value;
+  double value_rounded = 0.0;  // correctly rounded to double (strtod rounds correctly)
+};
+
+// Reads an elliptic-integral table with `input_count` inputs per row (the one reader of these
+// tables for the tests and `disklab accuracy`); `columns`, when given, must be its header.
+inline std::vector<EllipticRow> read_elliptic_table(const std::filesystem::path& path,
+                                                    std::size_t input_count,
+                                                    const std::vector<std::string>& columns = {},
+                                                    std::size_t min_rows = 1) {
+  const CsvTable table = read_csv_table(path, columns, min_rows);
+  if (table.columns.size() != input_count + 1)
+    throw std::runtime_error(path.string() + ": expected " + std::to_string(input_count + 1) +
+                             " columns");
+  std::vector<EllipticRow> rows;
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    EllipticRow row;
+    for (std::size_t i = 0; i < input_count; ++i)
+      row.inputs.push_back(table.number(r, i));
+    row.value = table.rows[r][input_count];
+    row.value_rounded = table.number(r, input_count);
+    rows.push_back(std::move(row));
+  }
+  return rows;
+}
+
 // One row of solid_angle.csv: a disk, a shading point and the 45-digit solid angle.
 struct SolidAngleRow {
   int id = 0;

@@ -31,17 +31,17 @@ struct Row {
 };
 
 std::vector<Row> read_table(const std::filesystem::path& path, bool has_n) {
-  const auto t =
-      reference::read_csv_table(path, has_n ? std::vector<std::string>{"n", "phi", "m", "Pi"}
-                                            : std::vector<std::string>{"phi", "m", "F"});
   std::vector<Row> rows;
-  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+  for (const reference::EllipticRow& t :
+       reference::read_elliptic_table(path, has_n ? 3 : 2,
+                                      has_n ? std::vector<std::string>{"n", "phi", "m", "Pi"}
+                                            : std::vector<std::string>{"phi", "m", "F"})) {
     Row row;
     std::size_t i = 0;
-    if (has_n) row.n = t.number(r, i++);
-    row.phi = t.number(r, i++);
-    row.m = t.number(r, i++);
-    row.reference = t.number(r, i);
+    if (has_n) row.n = t.inputs[i++];
+    row.phi = t.inputs[i++];
+    row.m = t.inputs[i];
+    row.reference = t.value_rounded;
     rows.push_back(row);
   }
   return rows;
