@@ -31,8 +31,8 @@ inline constexpr double kAvalancheTolerance = 0.03;
 // Best candidates: the minimum distance of N best-candidate points (worst of the structure
 // seeds) must exceed random's (best of the same seeds) by this factor at N = 64, 512, 4096.
 // Random's minimum distance shrinks like 1/N, best candidates' roughly like 1/sqrt(N), so the
-// ratio grows with N: measured 5.3, 8.5 and 31 (2026-11-23). 4 is a clear margin at every N
-// while a random or barely-better set (ratio ~1) fails.
+// ratio grows with N (about 5, 8 and 30 at these N; the test records them). 4 is a clear
+// margin at every N while a random or barely-better set (ratio ~1) fails.
 inline constexpr double kBestCandidateMinDistanceFactor = 4.0;
 // Best candidates' minimum distance as a fraction of the hexagonal packing's spacing, at every
 // prefix length: a quarter. Random points reach 0.09 of it at N = 64 and 0.01 at N = 4096 (the
