@@ -15,6 +15,11 @@ thread_local bool counting = false;
 thread_local long allocations = 0;
 }  // namespace
 
+// The replacements pair malloc with free; GCC (-O1 and up) inlines a delete next to a `new T`
+// and warns as if the built-in operator new had allocated (-Wmismatched-new-delete), which is
+// not what runs here.
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+
 void* operator new(std::size_t size) {
   if (counting) ++allocations;
   if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
