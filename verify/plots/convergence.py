@@ -64,8 +64,9 @@ def main():
         for s in REFERENCE_SLOPES:
             ax.plot([n0, n1], [anchor, anchor * (n1 / n0) ** s], color="0.75", lw=0.8, ls="--",
                     zorder=1)
-            ax.text(n1, anchor * (n1 / n0) ** s, " %g" % s, color="0.55", fontsize=7,
-                    va="center")
+            end = anchor * (n1 / n0) ** s
+            if end >= ymin:  # label only the lines that end inside the panel
+                ax.text(n1, end, " %g" % s, color="0.55", fontsize=7, va="center")
         for seq in sequences:
             pts = sorted(curves[st].get(seq, []))
             if not pts:

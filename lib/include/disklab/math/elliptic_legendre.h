@@ -66,6 +66,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <type_traits>
 
 #include "disklab/math/elliptic_carlson.h"
@@ -510,16 +511,30 @@ inline Real ellint_pi_complete(Real n, Real m) {
 
 // D(phi|m) = int_0^phi sin^2 t / sqrt(1 - m sin^2 t) dt = (s^3/3) R_D(c^2, Delta^2, 1)
 // (DLMF 19.25.13). F - E = m D without cancellation.
+namespace detail {
+// sin(phi), R_F and R_D of the Legendre arguments, shared by D and E; nullopt outside the domain.
+template <class Real>
+struct SinRfRd {
+  work_t<Real> s, rf, rd;
+};
+template <class Real>
+inline std::optional<SinRfRd<Real>> legendre_rf_rd(Real phi, Real m, Real one_minus_m) {
+  using W = work_t<Real>;
+  if (!(m <= 1) || !(one_minus_m >= 0) || !in_phi_domain(phi)) return std::nullopt;
+  const auto a = legendre_args(phi, m, one_minus_m);
+  if (a.s == 0) return SinRfRd<Real>{W(0), W(0), W(0)};
+  W rf, rd;
+  rf_rj_legendre<Real>(a.c, a.c2, a.delta2, W(1), rf, rd);
+  return SinRfRd<Real>{a.s, rf, rd};
+}
+}  // namespace detail
+
 template <class Real>
 inline Real ellint_d(Real phi, Real m, Real one_minus_m) {
-  using W = detail::work_t<Real>;
-  if (!(m <= 1) || !(one_minus_m >= 0) || !detail::in_phi_domain(phi))
-    return detail::quiet_nan<Real>();
-  const auto a = detail::legendre_args(phi, m, one_minus_m);
-  if (a.s == 0) return Real(0);
-  W rf, rd;
-  detail::rf_rj_legendre<Real>(a.c, a.c2, a.delta2, W(1), rf, rd);
-  return static_cast<Real>(a.s * a.s * a.s / 3 * rd);
+  const auto t = detail::legendre_rf_rd(phi, m, one_minus_m);
+  if (!t) return detail::quiet_nan<Real>();
+  if (t->s == 0) return Real(0);
+  return static_cast<Real>(t->s * t->s * t->s / 3 * t->rd);
 }
 template <class Real>
 inline Real ellint_d(Real phi, Real m) {
@@ -529,14 +544,11 @@ inline Real ellint_d(Real phi, Real m) {
 // E(phi|m) = int_0^phi sqrt(1 - m sin^2 t) dt = F - m D (DLMF 19.25.9).
 template <class Real>
 inline Real ellint_e(Real phi, Real m, Real one_minus_m) {
+  const auto t = detail::legendre_rf_rd(phi, m, one_minus_m);
+  if (!t) return detail::quiet_nan<Real>();
+  if (t->s == 0) return Real(0);
   using W = detail::work_t<Real>;
-  if (!(m <= 1) || !(one_minus_m >= 0) || !detail::in_phi_domain(phi))
-    return detail::quiet_nan<Real>();
-  const auto a = detail::legendre_args(phi, m, one_minus_m);
-  if (a.s == 0) return Real(0);
-  W rf, rd;
-  detail::rf_rj_legendre<Real>(a.c, a.c2, a.delta2, W(1), rf, rd);
-  return static_cast<Real>(a.s * rf - W(m) * a.s * a.s * a.s / 3 * rd);
+  return static_cast<Real>(t->s * t->rf - W(m) * t->s * t->s * t->s / 3 * t->rd);
 }
 template <class Real>
 inline Real ellint_e(Real phi, Real m) {
