@@ -26,6 +26,7 @@
 #include "command.h"
 #include "common/args.h"
 #include "common/output.h"
+#include "common/study_output.h"
 #include "disklab/sequence/sequence.h"
 #include "study/claims.h"
 #include "study/convergence.h"
@@ -111,25 +112,9 @@ ConvergenceConfig make_config(const ConvergenceState& s) {
   return c;
 }
 
-std::string strategy_of(const ConvergenceResult& r, std::size_t curve) {
-  const std::size_t st = (curve / r.config.sequences.size()) % r.config.strategies.size();
-  return std::string(disk::strategy_name(r.config.strategies[st]));
-}
-std::string sequence_of(const ConvergenceResult& r, std::size_t curve) {
-  return r.config.sequences[curve % r.config.sequences.size()];
-}
-std::size_t region_of(const ConvergenceResult& r, std::size_t curve) {
-  return curve / (r.config.sequences.size() * r.config.strategies.size());
-}
-
 struct Outputs {
   std::string csv, fits_csv, refs_csv, json, markdown, claims_markdown;
 };
-
-nlohmann::json optional_json(const std::optional<double>& v) {
-  if (!v || !std::isfinite(*v)) return nullptr;
-  return *v;
-}
 
 std::string describe_scene(const ConvergenceConfig& c) {
   const auto& l = c.scene.light;
@@ -167,16 +152,6 @@ std::string command_line(const ConvergenceConfig& c) {
   return s;
 }
 
-std::string slope_cell(const study::CurveFit& f) {
-  if (!f.slope) return "-";
-  char buf[64];
-  if (f.slope_se)
-    std::snprintf(buf, sizeof buf, "%+.2f ± %.2f", *f.slope, *f.slope_se);
-  else
-    std::snprintf(buf, sizeof buf, "%+.2f", *f.slope);
-  return buf;
-}
-
 // The headline: for each region and strategy, the sequence with the lowest RMS at the largest N,
 // its slope and that RMS.
 std::string headline_markdown(const ConvergenceResult& r,
@@ -202,7 +177,7 @@ std::string headline_markdown(const ConvergenceResult& r,
       std::snprintf(buf, sizeof buf, "%.2e", r.rmse(best, last));
       // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on + chains here.
       md += ' ';
-      md += sequence_of(r, best);
+      md += r.sequence_of(best);
       md += ": slope ";
       md += slope_cell(fits[best]);
       md += ", RMS ";
@@ -241,7 +216,7 @@ std::string slope_tables(const ConvergenceResult& r, const std::vector<study::Cu
 Outputs make_outputs(const ConvergenceResult& r) {
   const auto& c = r.config;
   const study::SeedBootstrap bootstrap = study::make_bootstrap(c);
-  const std::vector<study::CurveFit> fits = study::fit_all(r, bootstrap);
+  const std::vector<study::CurveFit> fits = study::fit_all(r, bootstrap, c.threads);
   const std::vector<study::Claim> claims = study::memo_claims(c.sequences);
   const std::vector<study::ClaimOutcome> outcomes = study::evaluate_claims(claims, r, bootstrap);
   Outputs o;
@@ -271,71 +246,21 @@ Outputs make_outputs(const ConvergenceResult& r) {
   meta["sequences"] = c.sequences;
   j["meta"] = meta;
 
-  o.csv = "region,strategy,sequence,n,rmse,rel_rmse\n";
-  j["rows"] = nlohmann::json::array();
-  for (std::size_t curve = 0; curve < r.curves(); ++curve) {
-    const std::string region = c.regions[region_of(r, curve)].grid.name;
-    const std::string st = strategy_of(r, curve), q = sequence_of(r, curve);
-    for (std::size_t k = 0; k < c.ns.size(); ++k) {
-      const double e = r.rmse(curve, k), rel = r.rel_rmse(curve, k);
-      o.csv += region + "," + st + "," + q + "," + std::to_string(c.ns[k]) + "," + fmt17(e) + "," +
-               fmt17(rel) + "\n";
-      j["rows"].push_back({{"region", region},
-                           {"strategy", st},
-                           {"sequence", q},
-                           {"n", c.ns[k]},
-                           {"rmse", e},
-                           {"rel_rmse", rel}});
-    }
-  }
-  o.fits_csv = "region,strategy,sequence,slope,slope_se,fit_n_min,fit_n_max\n";
-  j["fits"] = nlohmann::json::array();
-  for (const study::CurveFit& f : fits) {
-    const std::string region = c.regions[region_of(r, f.curve)].grid.name;
-    const std::string st = strategy_of(r, f.curve), q = sequence_of(r, f.curve);
-    o.fits_csv += region + "," + st + "," + q + "," + (f.slope ? fmt17(*f.slope) : "") + "," +
-                  (f.slope_se ? fmt17(*f.slope_se) : "") + "," + std::to_string(c.fit_min) + "," +
-                  std::to_string(c.ns.back()) + "\n";
-    j["fits"].push_back({{"region", region},
-                         {"strategy", st},
-                         {"sequence", q},
-                         {"slope", optional_json(f.slope)},
-                         {"slope_se", optional_json(f.slope_se)},
-                         {"fit_n_min", c.fit_min},
-                         {"fit_n_max", c.ns.back()}});
-  }
-  o.refs_csv = "region,x,y,E,error_estimate,method\n";
-  j["references"] = nlohmann::json::array();
-  for (const auto& refs : r.references)
-    for (const auto& p : refs.points) {
-      o.refs_csv += refs.region + "," + fmt17(p.point.position.x()) + "," +
-                    fmt17(p.point.position.y()) + "," + fmt17(p.reference.value) + "," +
-                    fmt17(p.reference.error_estimate) + "," + refs.method + "\n";
-      j["references"].push_back({{"region", refs.region},
-                                 {"x", p.point.position.x()},
-                                 {"y", p.point.position.y()},
-                                 {"E", p.reference.value},
-                                 {"error_estimate", p.reference.error_estimate},
-                                 {"method", refs.method}});
-    }
-  j["claims"] = nlohmann::json::array();
-  for (const study::ClaimOutcome& out : outcomes) {
-    const study::Claim& cl = claims[out.claim];
-    j["claims"].push_back({{"id", cl.id},
-                           {"section", cl.section},
-                           {"claim", cl.text},
-                           {"measured_as", cl.measured_as},
-                           {"rule", study::rule_text(cl.rule)},
-                           {"claimed", cl.rule.claimed},
-                           {"region", out.region},
-                           {"measured", optional_json(out.measured)},
-                           {"se", optional_json(out.se)},
-                           {"verdict", study::verdict_name(out.verdict)},
-                           {"note", out.note}});
-  }
+  const TableOutput rows = curve_rows(r, "strategy"), fit_table = fit_rows(r, fits, "strategy");
+  o.csv = rows.csv;
+  j["rows"] = rows.json;
+  o.fits_csv = fit_table.csv;
+  j["fits"] = fit_table.json;
+  const TableOutput refs = reference_rows(r.references);
+  o.refs_csv = refs.csv;
+  j["references"] = refs.json;
+  j["claims"] = claims_json(claims, outcomes);
   o.json = j.dump(1) + "\n";
 
-  o.claims_markdown = study::claims_markdown(claims, outcomes, r);
+  o.claims_markdown = study::claims_markdown(
+      claims, outcomes, study::memo_sections(),
+      "Ratios are of RMS errors; \"geometric mean\" is over the fit range N = " +
+          std::to_string(c.fit_min) + " .. " + std::to_string(c.ns.back()) + ".");
   std::string md = "# disklab convergence\n\nGenerated by `" + command_line(c) +
                    "`: the convergence study of Christensen's memo (Secs. 4.1-4.2, Figs. 5-6) "
                    "on a scene anyone can recompute.\n\n";

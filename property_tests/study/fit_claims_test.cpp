@@ -192,7 +192,7 @@ TEST(Claims, SlopeClaimsOnASyntheticStudy) {
   EXPECT_EQ(missing.verdict, Verdict::not_measured);
   EXPECT_NE(missing.note.find("sobol-owen"), std::string::npos);
   // The Markdown flags the region dependence it sees.
-  const std::string md = claims_markdown(claims, out, r);
+  const std::string md = claims_markdown(claims, out, memo_sections(), "Ratios are of RMS errors.");
   EXPECT_NE(md.find("depends on the region"), std::string::npos);
 }
 

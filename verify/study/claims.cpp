@@ -48,6 +48,8 @@ Verdict judge(const Rule& rule, std::optional<double> measured, double max_n) {
       const double f = std::fabs(std::log2(m / c));
       return grade(f <= 1.0, f <= 2.0);
     }
+    case RuleKind::at_most:
+      return grade(m <= c, m <= 1.5 * c);
   }
   return Verdict::not_measured;
 }
@@ -77,6 +79,10 @@ std::string rule_text(const Rule& rule) {
     case RuleKind::crossover:
       std::snprintf(buf, sizeof buf, "N %.0f: within x2 reproduced, x4 roughly", rule.claimed);
       break;
+    case RuleKind::at_most:
+      std::snprintf(buf, sizeof buf, "<= %.3g reproduced, <= %.3g roughly", rule.claimed,
+                    1.5 * rule.claimed);
+      break;
   }
   return buf;
 }
@@ -85,14 +91,14 @@ namespace {
 using Weights = std::span<const uint32_t>;
 using Opt = std::optional<double>;
 
-const std::string& region_name(const ConvergenceResult& r, std::size_t region) {
-  return r.config.regions[region].grid.name;
+const std::string& region_name(const CurveTable& r, std::size_t region) {
+  return r.axes.regions[region];
 }
-std::optional<std::size_t> curve(const ConvergenceResult& r, std::size_t region,
+std::optional<std::size_t> curve(const CurveTable& r, std::size_t region,
                                  const std::string& strategy, const std::string& sequence) {
   return r.find_curve(region_name(r, region), strategy, sequence);
 }
-Opt log_rmse(const ConvergenceResult& r, std::size_t c, std::size_t k, Weights w) {
+Opt log_rmse(const CurveTable& r, std::size_t c, std::size_t k, Weights w) {
   const double e = r.rmse(c, k, w);
   if (!(e > 0.0)) return std::nullopt;
   return std::log(e);
@@ -100,7 +106,7 @@ Opt log_rmse(const ConvergenceResult& r, std::size_t c, std::size_t k, Weights w
 // exp of the mean of log_ratio(k) over the fit range: a geometric mean of RMS ratios. nullopt
 // if any term is undefined.
 template <class F>
-Opt fit_range_geomean(const ConvergenceResult& r, F&& log_ratio) {
+Opt fit_range_geomean(const CurveTable& r, F&& log_ratio) {
   double sum = 0.0;
   int count = 0;
   for (std::size_t k : r.fit_indices()) {
@@ -113,7 +119,7 @@ Opt fit_range_geomean(const ConvergenceResult& r, F&& log_ratio) {
   return std::exp(sum / count);
 }
 // The lowest log rmse at ns[k] over the curves of these strategies and sequences in the run.
-Opt min_log_rmse(const ConvergenceResult& r, std::size_t region,
+Opt min_log_rmse(const CurveTable& r, std::size_t region,
                  const std::vector<std::string>& strategies,
                  const std::vector<std::string>& sequences, std::size_t k, Weights w) {
   Opt best;
@@ -127,7 +133,7 @@ Opt min_log_rmse(const ConvergenceResult& r, std::size_t region,
   return best;
 }
 // log rmse(a) - log rmse(b) at ns[k].
-Opt log_ratio_at(const ConvergenceResult& r, std::size_t a, std::size_t b, std::size_t k,
+Opt log_ratio_at(const CurveTable& r, std::size_t a, std::size_t b, std::size_t k,
                  Weights w) {
   const Opt la = log_rmse(r, a, k, w), lb = log_rmse(r, b, k, w);
   if (!la || !lb) return std::nullopt;
@@ -138,7 +144,7 @@ Opt log_ratio_at(const ConvergenceResult& r, std::size_t a, std::size_t b, std::
 namespace measures {
 
 Measure slope(std::string strategy, std::string sequence) {
-  return [=](const ConvergenceResult& r, std::size_t region, Weights w) -> Opt {
+  return [=](const CurveTable& r, std::size_t region, Weights w) -> Opt {
     const auto c = curve(r, region, strategy, sequence);
     if (!c) return std::nullopt;
     return r.slope(*c, w);
@@ -146,9 +152,9 @@ Measure slope(std::string strategy, std::string sequence) {
 }
 
 Measure best_slope(std::string strategy) {
-  return [=](const ConvergenceResult& r, std::size_t region, Weights w) -> Opt {
+  return [=](const CurveTable& r, std::size_t region, Weights w) -> Opt {
     Opt best;
-    for (const std::string& q : r.config.sequences) {
+    for (const std::string& q : r.axes.sequences) {
       const auto c = curve(r, region, strategy, q);
       if (!c) continue;
       const Opt s = r.slope(*c, w);
@@ -158,8 +164,12 @@ Measure best_slope(std::string strategy) {
   };
 }
 
+Measure constant(std::optional<double> value) {
+  return [=](const CurveTable&, std::size_t, Weights) { return value; };
+}
+
 Measure slope_difference(std::string strategy_a, std::string strategy_b, std::string sequence) {
-  return [=](const ConvergenceResult& r, std::size_t region, Weights w) -> Opt {
+  return [=](const CurveTable& r, std::size_t region, Weights w) -> Opt {
     const auto a = curve(r, region, strategy_a, sequence),
                b = curve(r, region, strategy_b, sequence);
     if (!a || !b) return std::nullopt;
@@ -171,7 +181,7 @@ Measure slope_difference(std::string strategy_a, std::string strategy_b, std::st
 
 Measure ratio_at(std::string strategy_a, std::string sequence_a, std::string strategy_b,
                  std::string sequence_b, uint32_t n) {
-  return [=](const ConvergenceResult& r, std::size_t region, Weights w) -> Opt {
+  return [=](const CurveTable& r, std::size_t region, Weights w) -> Opt {
     const auto a = curve(r, region, strategy_a, sequence_a);
     const auto b = curve(r, region, strategy_b, sequence_b);
     const auto k = n == 0 ? std::optional<std::size_t>(0) : r.find_n(n);
@@ -184,7 +194,7 @@ Measure ratio_at(std::string strategy_a, std::string sequence_a, std::string str
 
 Measure mean_ratio(std::string strategy_a, std::string sequence_a, std::string strategy_b,
                    std::string sequence_b) {
-  return [=](const ConvergenceResult& r, std::size_t region, Weights w) -> Opt {
+  return [=](const CurveTable& r, std::size_t region, Weights w) -> Opt {
     const auto a = curve(r, region, strategy_a, sequence_a);
     const auto b = curve(r, region, strategy_b, sequence_b);
     if (!a || !b) return std::nullopt;
@@ -194,11 +204,11 @@ Measure mean_ratio(std::string strategy_a, std::string sequence_a, std::string s
 
 Measure crossover(std::string strategy_a, std::string sequence_a, std::string strategy_b,
                   std::string sequence_b) {
-  return [=](const ConvergenceResult& r, std::size_t region, Weights w) -> Opt {
+  return [=](const CurveTable& r, std::size_t region, Weights w) -> Opt {
     const auto a = curve(r, region, strategy_a, sequence_a);
     const auto b = curve(r, region, strategy_b, sequence_b);
     if (!a || !b) return std::nullopt;
-    const auto& ns = r.config.ns;
+    const auto& ns = r.ns();
     double prev = 0.0;  // log rmse_b - log rmse_a at ns[k - 1]
     for (std::size_t k = 0; k < ns.size(); ++k) {
       const Opt la = log_rmse(r, *a, k, w), lb = log_rmse(r, *b, k, w);
@@ -218,14 +228,14 @@ Measure crossover(std::string strategy_a, std::string sequence_a, std::string st
 
 Measure sample_ratio(std::string strategy_a, std::string sequence_a, std::string strategy_b,
                      std::string sequence_b, uint32_t n) {
-  return [=](const ConvergenceResult& r, std::size_t region, Weights w) -> Opt {
+  return [=](const CurveTable& r, std::size_t region, Weights w) -> Opt {
     const auto a = curve(r, region, strategy_a, sequence_a);
     const auto b = curve(r, region, strategy_b, sequence_b);
     const auto ka = r.find_n(n);
     if (!a || !b || !ka) return std::nullopt;
     const Opt target = log_rmse(r, *a, *ka, w);
     if (!target) return std::nullopt;
-    const auto& ns = r.config.ns;
+    const auto& ns = r.ns();
     for (std::size_t k = 1; k < ns.size(); ++k) {
       const Opt l0 = log_rmse(r, *b, k - 1, w), l1 = log_rmse(r, *b, k, w);
       if (!l0 || !l1) return std::nullopt;
@@ -252,7 +262,7 @@ const std::vector<std::string> kPenumbra = {"penumbra"};
 // seq): how a strategy compares with the best of the alternatives.
 Measure ratio_to_best_other(std::string strategy, std::string sequence,
                             std::vector<std::string> others) {
-  return [=](const ConvergenceResult& r, std::size_t region, Weights w) -> Opt {
+  return [=](const CurveTable& r, std::size_t region, Weights w) -> Opt {
     const auto a = curve(r, region, strategy, sequence);
     if (!a) return std::nullopt;
     return fit_range_geomean(r, [&](std::size_t k) -> Opt {
@@ -267,8 +277,8 @@ Measure ratio_to_best_other(std::string strategy, std::string sequence,
 // Geometric mean over the fit range of min over sequences of rmse(strategy_a, .) divided by the
 // same for the best of `strategies_b`: the best curve of one strategy against the best of others.
 Measure best_vs_best(std::string strategy_a, std::vector<std::string> strategies_b) {
-  return [=](const ConvergenceResult& r, std::size_t region, Weights w) -> Opt {
-    const auto& qs = r.config.sequences;
+  return [=](const CurveTable& r, std::size_t region, Weights w) -> Opt {
+    const auto& qs = r.axes.sequences;
     return fit_range_geomean(r, [&](std::size_t k) -> Opt {
       const Opt la = min_log_rmse(r, region, {strategy_a}, qs, k, w);
       const Opt lb = min_log_rmse(r, region, strategies_b, qs, k, w);
@@ -281,7 +291,7 @@ Measure best_vs_best(std::string strategy_a, std::vector<std::string> strategies
 // Geometric mean over the fit range of rmse(strategy, sequence) / the median over `others`.
 Measure ratio_to_median(std::string strategy, std::string sequence,
                         std::vector<std::string> others) {
-  return [=](const ConvergenceResult& r, std::size_t region, Weights w) -> Opt {
+  return [=](const CurveTable& r, std::size_t region, Weights w) -> Opt {
     const auto a = curve(r, region, strategy, sequence);
     if (!a) return std::nullopt;
     return fit_range_geomean(r, [&](std::size_t k) -> Opt {
@@ -451,7 +461,7 @@ std::vector<Claim> memo_claims(const std::vector<std::string>& sequences) {
   b.add("pen.pad-rejection.high", pen, "pad-zero and rejection have very high error (Sec. 4.2)",
         "best pad-zero/rejection rmse / best map rmse, geometric mean over the fit range",
         {RuleKind::higher, 1.5}, kPenumbra, {}, all_strategies,
-        [](const ConvergenceResult& r, std::size_t region, Weights w) -> Opt {
+        [](const CurveTable& r, std::size_t region, Weights w) -> Opt {
           const Opt a = best_vs_best("pad-zero", {"polar", "concentric", "polar4", "concentric4"})(
               r, region, w);
           const Opt c = best_vs_best("rejection", {"polar", "concentric", "polar4", "concentric4"})(
@@ -501,31 +511,23 @@ std::vector<Claim> memo_claims(const std::vector<std::string>& sequences) {
   return std::move(b.claims);
 }
 
-std::vector<ClaimOutcome> evaluate_claims(const std::vector<Claim>& claims,
-                                          const ConvergenceResult& result,
+std::vector<ClaimOutcome> evaluate_claims(const std::vector<Claim>& claims, const CurveTable& result,
                                           const SeedBootstrap& bootstrap) {
   std::vector<ClaimOutcome> out;
-  const auto& cfg = result.config;
-  const double max_n = cfg.ns.empty() ? 0.0 : cfg.ns.back();
+  const auto& ns = result.ns();
+  const double max_n = ns.empty() ? 0.0 : ns.back();
   for (std::size_t i = 0; i < claims.size(); ++i) {
     const Claim& claim = claims[i];
     for (const std::string& region : claim.regions) {
       ClaimOutcome o;
       o.claim = i;
       o.region = region;
-      std::optional<std::size_t> ri;
-      for (std::size_t r = 0; r < cfg.regions.size(); ++r)
-        if (cfg.regions[r].grid.name == region) ri = r;
+      const std::optional<std::size_t> ri = result.find_region(region);
       std::string missing;
       for (const std::string& q : claim.needs_sequences)
-        if (std::find(cfg.sequences.begin(), cfg.sequences.end(), q) == cfg.sequences.end())
-          missing += (missing.empty() ? "" : ", ") + ("sequence " + q);
-      for (const std::string& st : claim.needs_strategies) {
-        const bool present =
-            std::any_of(cfg.strategies.begin(), cfg.strategies.end(),
-                        [&](disk::Strategy s) { return disk::strategy_name(s) == st; });
-        if (!present) missing += (missing.empty() ? "" : ", ") + ("strategy " + st);
-      }
+        if (!result.has_sequence(q)) missing += (missing.empty() ? "" : ", ") + ("sequence " + q);
+      for (const std::string& m : claim.needs_methods)
+        if (!result.has_method(m)) missing += (missing.empty() ? "" : ", ") + ("method " + m);
       if (!ri) missing += (missing.empty() ? "" : ", ") + ("region " + region);
       if (!missing.empty()) {
         o.note = "not in this run: " + missing;
@@ -537,7 +539,8 @@ std::vector<ClaimOutcome> evaluate_claims(const std::vector<Claim>& claims,
       // A crossover at or beyond the run's ends (0 or infinity) is a bound, not a value: no
       // standard error, and replicates that land there are left out of it.
       const bool crossover = claim.rule.kind == RuleKind::crossover;
-      if (o.measured && std::isfinite(*o.measured) && (!crossover || *o.measured > 0.0))
+      if (claim.bootstrap && o.measured && std::isfinite(*o.measured) &&
+          (!crossover || *o.measured > 0.0))
         o.se = bootstrap.standard_error([&](std::span<const uint32_t> w) -> Opt {
           const Opt v = claim.measure(result, *ri, w);
           if (crossover && v && !(*v > 0.0 && std::isfinite(*v))) return std::nullopt;
@@ -546,7 +549,7 @@ std::vector<ClaimOutcome> evaluate_claims(const std::vector<Claim>& claims,
       char buf[160] = "";
       if (!o.measured) {
         std::snprintf(buf, sizeof buf, "not measurable in this run (N = %.0f .. %.0f)",
-                      static_cast<double>(cfg.ns.front()), max_n);
+                      ns.empty() ? 0.0 : static_cast<double>(ns.front()), max_n);
       } else if (o.verdict != Verdict::reproduced) {
         const double m = *o.measured, c = claim.rule.claimed;
         switch (claim.rule.kind) {
@@ -554,13 +557,14 @@ std::vector<ClaimOutcome> evaluate_claims(const std::vector<Claim>& claims,
             std::snprintf(buf, sizeof buf, "%+.2f from the claim", m - c);
             break;
           case RuleKind::factor:
+          case RuleKind::at_most:
             std::snprintf(buf, sizeof buf, "x%.2f the claim", m / c);
             break;
           case RuleKind::crossover:
             if (std::isinf(m))
               std::snprintf(buf, sizeof buf, "not caught up by N = %.0f", max_n);
             else if (m == 0.0)
-              std::snprintf(buf, sizeof buf, "already lower at N = %u", cfg.ns.front());
+              std::snprintf(buf, sizeof buf, "already lower at N = %u", ns.front());
             else
               std::snprintf(buf, sizeof buf, "x%.2f the claimed N", m / c);
             break;
@@ -607,41 +611,54 @@ std::string escape(std::string s) {
 }
 }  // namespace
 
+std::vector<ClaimSection> memo_sections() {
+  return {{"fully lit", "Fully lit (memo Sec. 4.1)"}, {"penumbra", "Penumbra (memo Sec. 4.2)"}};
+}
+
 std::string claims_markdown(const std::vector<Claim>& claims,
                             const std::vector<ClaimOutcome>& outcomes,
-                            const ConvergenceResult& result) {
+                            const std::vector<ClaimSection>& sections,
+                            const std::string& ratios_note) {
+  std::vector<bool> used(static_cast<int>(RuleKind::at_most) + 1, false);
+  for (const Claim& c : claims)
+    used[static_cast<int>(c.rule.kind)] = true;
+  auto uses = [&](RuleKind k) { return used[static_cast<int>(k)]; };
   std::string md;
   md +=
       "Verdicts are computed by these rules from the measured value (± is the bootstrap "
       "standard error over the randomizations, shown but not used by the rule):\n\n";
+  if (uses(RuleKind::slope))
+    md +=
+        "- slope: within 0.10 of the claim **reproduced**, within 0.20 **roughly**, else "
+        "**differs**;\n";
+  if (uses(RuleKind::factor))
+    md += "- factor: within x1.25 of the claim reproduced, within x1.5 roughly;\n";
+  if (uses(RuleKind::about_equal))
+    md += "- \"a few percent\" (ratio 1): within 0.10 reproduced, within 0.25 roughly;\n";
+  if (uses(RuleKind::lower) || uses(RuleKind::higher))
+    md +=
+        "- \"lower\" with threshold c: ratio <= c reproduced, <= (1 + c) / 2 roughly; \"higher\" "
+        "mirrors it (>= c, >= (1 + c) / 2);\n";
+  if (uses(RuleKind::crossover))
+    md +=
+        "- crossover sample count: within x2 reproduced, x4 roughly; none within the run "
+        "differs once the run reaches twice the claimed N;\n";
+  if (uses(RuleKind::at_most))
+    md += "- \"up to c\": at most c reproduced, at most 1.5 c roughly;\n";
   md +=
-      "- slope: within 0.10 of the claim **reproduced**, within 0.20 **roughly**, else "
-      "**differs**;\n";
-  md += "- factor: within x1.25 of the claim reproduced, within x1.5 roughly;\n";
-  md += "- \"a few percent\" (ratio 1): within 0.10 reproduced, within 0.25 roughly;\n";
-  md +=
-      "- \"lower\" with threshold c: ratio <= c reproduced, <= (1 + c) / 2 roughly; \"higher\" "
-      "mirrors it (>= c, >= (1 + c) / 2);\n";
-  md +=
-      "- crossover sample count: within x2 reproduced, x4 roughly; none within the run "
-      "differs once the run reaches twice the claimed N;\n";
-  md += "- not measured: the run lacks the sequence, strategy or sample count the claim needs.\n\n";
-  md += "Ratios are of RMS errors; \"geometric mean\" is over the fit range N = " +
-        std::to_string(result.config.fit_min) + " .. " + std::to_string(result.config.ns.back()) +
-        ".\n";
+      "- not measured: the run lacks the sequence, method or sample count the claim needs.\n\n";
+  md += ratios_note + "\n";
 
   std::map<std::string, int> tally;
-  for (const std::string section : {"fully lit", "penumbra"}) {
+  for (const ClaimSection& sec : sections) {
+    const std::string& section = sec.key;
     std::vector<std::string> regions;
     for (const ClaimOutcome& o : outcomes)
       if (claims[o.claim].section == section &&
           std::find(regions.begin(), regions.end(), o.region) == regions.end())
         regions.push_back(o.region);
     if (regions.empty()) continue;
-    md += "\n### " +
-          std::string(section == "fully lit" ? "Fully lit (memo Sec. 4.1)"
-                                             : "Penumbra (memo Sec. 4.2)") +
-          "\n\n";
+    md += "\n### " + sec.title + "\n\n";
     md += "| claim | measured as | rule |";
     for (const std::string& r : regions)
       md += " " + r + " | verdict |";
@@ -670,7 +687,7 @@ std::string claims_markdown(const std::vector<Claim>& claims,
         md += " | ";
         md += verdict_name(o->verdict);
         md += " |";
-        ++tally[std::string(section) + "|" + verdict_name(o->verdict)];
+        ++tally[section + "|" + verdict_name(o->verdict)];
         verdicts.push_back(o->verdict);
         if (!o->note.empty())
           notes += (notes.empty() ? "" : "; ") + (regions.size() > 1 ? r + ": " : "") + o->note;
@@ -682,7 +699,8 @@ std::string claims_markdown(const std::vector<Claim>& claims,
     }
   }
   md += "\nTally (claim x region):";
-  for (const std::string section : {"fully lit", "penumbra"}) {
+  for (const ClaimSection& sec : sections) {
+    const std::string& section = sec.key;
     md += " " + section + ":";
     for (Verdict v :
          {Verdict::reproduced, Verdict::roughly, Verdict::differs, Verdict::not_measured})

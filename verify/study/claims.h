@@ -1,8 +1,9 @@
 #pragma once
 // Claims of a paper next to what a study measures, with a verdict computed by a stated rule.
 // The rules are generic (slopes, factors, "about the same", "lower", "higher", a crossover
-// sample count); the memo's claims (Christensen 2018, Secs. 4.1-4.2) are listed in
-// memo_claims() and measured on a ConvergenceResult, with bootstrap standard errors.
+// sample count, an upper bound); claims are measured on a study's CurveTable with bootstrap
+// standard errors over its seeds. The memo's claims (Christensen 2018, Secs. 4.1-4.2) are listed
+// in memo_claims().
 #include <cstddef>
 #include <functional>
 #include <optional>
@@ -10,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "study/convergence.h"
+#include "study/curves.h"
 #include "study/fit.h"
 
 namespace disklab::study {
@@ -25,6 +26,7 @@ enum class RuleKind {
   lower,        // a ratio below c: m <= c reproduced, m <= (1 + c) / 2 roughly
   higher,       // a ratio above c: m >= c reproduced, m >= (1 + c) / 2 roughly
   crossover,    // a sample count: |log2(m / c)| <= 1 reproduced, <= 2 roughly
+  at_most,      // "up to c": m <= c reproduced, m <= 1.5 c roughly
 };
 
 struct Rule {
@@ -39,18 +41,25 @@ Verdict judge(const Rule& rule, std::optional<double> measured, double max_n = 0
 // The rule in words, for the report.
 std::string rule_text(const Rule& rule);
 
-using Measure = std::function<std::optional<double>(const ConvergenceResult&, std::size_t region,
+using Measure = std::function<std::optional<double>(const CurveTable&, std::size_t region,
                                                     std::span<const uint32_t> weights)>;
 
 struct Claim {
   std::string id;           // stable key, e.g. "lit.polar.pmj02.slope"
-  std::string section;      // "fully lit" or "penumbra"
+  std::string section;      // a ClaimSection key, e.g. "fully lit"
   std::string text;         // the memo's claim, in our words, with its section
   std::string measured_as;  // how the number is computed here
   Rule rule;
   std::vector<std::string> regions;
-  std::vector<std::string> needs_sequences, needs_strategies;  // to say why it is not measured
+  std::vector<std::string> needs_sequences, needs_methods;  // to say why it is not measured
   Measure measure;
+  // False for a value measured once (a count, a timing): no bootstrap standard error.
+  bool bootstrap = true;
+};
+
+// A table of the markdown: the claims whose section is `key`, under the heading `title`.
+struct ClaimSection {
+  std::string key, title;
 };
 
 struct ClaimOutcome {
@@ -63,18 +72,21 @@ struct ClaimOutcome {
 
 // The memo's claims; claims about "every other sequence" expand over `sequences` (the run's).
 std::vector<Claim> memo_claims(const std::vector<std::string>& sequences);
+// "fully lit" (memo Sec. 4.1) and "penumbra" (Sec. 4.2).
+std::vector<ClaimSection> memo_sections();
 
-std::vector<ClaimOutcome> evaluate_claims(const std::vector<Claim>& claims,
-                                          const ConvergenceResult& result,
+std::vector<ClaimOutcome> evaluate_claims(const std::vector<Claim>& claims, const CurveTable& table,
                                           const SeedBootstrap& bootstrap);
 
-// Markdown: the rules, one table per section (one column pair per region), and a tally.
+// Markdown: the rules in use, one table per section (one column pair per region), and a tally.
+// `ratios_note` says what the ratios are ratios of.
 std::string claims_markdown(const std::vector<Claim>& claims,
                             const std::vector<ClaimOutcome>& outcomes,
-                            const ConvergenceResult& result);
+                            const std::vector<ClaimSection>& sections,
+                            const std::string& ratios_note);
 
 // Measures shared by the claims (exposed for the tests). All return nullopt if a curve or N
-// is missing from the run.
+// is missing from the run. A "strategy" is a curve table's method.
 namespace measures {
 // Slope of one curve.
 Measure slope(std::string strategy, std::string sequence);
@@ -82,6 +94,8 @@ Measure slope(std::string strategy, std::string sequence);
 Measure best_slope(std::string strategy);
 // slope(a) - slope(b) for one sequence.
 Measure slope_difference(std::string strategy_a, std::string strategy_b, std::string sequence);
+// A value measured once (bootstrap replicates see the same value).
+Measure constant(std::optional<double> value);
 // rmse(a) / rmse(b) at N = n (n = 0: the run's smallest N).
 Measure ratio_at(std::string strategy_a, std::string sequence_a, std::string strategy_b,
                  std::string sequence_b, uint32_t n);

@@ -89,73 +89,22 @@ std::vector<RegionReferences> compute_references(const ConvergenceConfig& config
   return out;
 }
 
-std::optional<std::size_t> ConvergenceResult::find_curve(std::string_view region,
-                                                         std::string_view strategy,
-                                                         std::string_view sequence) const {
-  std::optional<std::size_t> r, st, q;
-  for (std::size_t i = 0; i < config.regions.size(); ++i)
-    if (config.regions[i].grid.name == region) r = i;
-  for (std::size_t i = 0; i < config.strategies.size(); ++i)
-    if (disk::strategy_name(config.strategies[i]) == strategy) st = i;
-  for (std::size_t i = 0; i < config.sequences.size(); ++i)
-    if (config.sequences[i] == sequence) q = i;
-  if (!r || !st || !q) return std::nullopt;
-  return curve_index(*r, *st, *q);
-}
-
-std::optional<std::size_t> ConvergenceResult::find_n(uint32_t n) const {
-  for (std::size_t k = 0; k < config.ns.size(); ++k)
-    if (config.ns[k] == n) return k;
-  return std::nullopt;
-}
-
-std::vector<std::size_t> ConvergenceResult::fit_indices() const {
-  std::vector<std::size_t> ks;
-  for (std::size_t k = 0; k < config.ns.size(); ++k)
-    if (config.ns[k] >= config.fit_min) ks.push_back(k);
-  return ks;
-}
-
 void ConvergenceResult::allocate() {
-  const std::size_t size = curves() * config.ns.size() * config.seeds;
-  sse.assign(size, 0.0);
-  rel_sse.assign(size, 0.0);
-}
-
-double ConvergenceResult::mean_square(const std::vector<double>& data, std::size_t curve,
-                                      std::size_t k, std::span<const uint32_t> weights) const {
-  const double* row = &data[(curve * config.ns.size() + k) * config.seeds];
-  double sum = 0.0, count = 0.0;
-  for (std::size_t s = 0; s < config.seeds; ++s) {
-    const double w = weights.empty() ? 1.0 : weights[s];
-    sum += w * row[s];
-    count += w;
+  axes.regions.clear();
+  axes.points.clear();
+  for (std::size_t r = 0; r < config.regions.size(); ++r) {
+    axes.regions.push_back(config.regions[r].grid.name);
+    axes.points.push_back(r < references.size() ? references[r].points.size()
+                                                : config.regions[r].grid.points().size());
   }
-  const std::size_t region = curve / (config.strategies.size() * config.sequences.size());
-  return sum / (count * static_cast<double>(points_per_region(region)));
-}
-
-double ConvergenceResult::rmse(std::size_t curve, std::size_t k,
-                               std::span<const uint32_t> weights) const {
-  return std::sqrt(mean_square(sse, curve, k, weights));
-}
-
-double ConvergenceResult::rel_rmse(std::size_t curve, std::size_t k,
-                                   std::span<const uint32_t> weights) const {
-  return std::sqrt(mean_square(rel_sse, curve, k, weights));
-}
-
-std::optional<double> ConvergenceResult::slope(std::size_t curve,
-                                               std::span<const uint32_t> weights) const {
-  std::vector<double> x, y;
-  for (std::size_t k : fit_indices()) {
-    const double e = rmse(curve, k, weights);
-    if (!(e > 0.0)) return std::nullopt;  // an exact estimate has no slope
-    x.push_back(config.ns[k]);
-    y.push_back(e);
-  }
-  if (x.size() < 2) return std::nullopt;
-  return fit_log_log(x, y).slope;
+  axes.methods.clear();
+  for (disk::Strategy st : config.strategies)
+    axes.methods.emplace_back(disk::strategy_name(st));
+  axes.sequences = config.sequences;
+  axes.ns = config.ns;
+  axes.fit_min = config.fit_min;
+  axes.seeds = config.seeds;
+  allocate_curves();
 }
 
 ConvergenceResult run_convergence(ConvergenceConfig config) {
@@ -215,21 +164,6 @@ SeedBootstrap make_bootstrap(const ConvergenceConfig& config) {
   // The resampling draws depend on the run's first seed only, so a run is reproducible.
   return SeedBootstrap(config.seeds, config.bootstrap_replicates,
                        0x9e3779b97f4a7c15ULL ^ config.first_seed);
-}
-
-std::vector<CurveFit> fit_all(const ConvergenceResult& result, const SeedBootstrap& bootstrap) {
-  std::vector<CurveFit> fits(result.curves());
-  const auto n = static_cast<int64_t>(fits.size());
-#pragma omp parallel for schedule(dynamic, 4) \
-    num_threads(result.config.threads > 0 ? result.config.threads : omp_get_max_threads())
-  for (int64_t c = 0; c < n; ++c) {
-    const auto curve = static_cast<std::size_t>(c);
-    fits[curve].curve = curve;
-    fits[curve].slope = result.slope(curve);
-    fits[curve].slope_se = bootstrap.standard_error(
-        [&](std::span<const uint32_t> w) { return result.slope(curve, w); });
-  }
-  return fits;
 }
 
 }  // namespace disklab::study

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "disklab/disk/strategy.h"
+#include "study/curves.h"
 #include "study/fit.h"
 #include "study/reference.h"
 #include "study/scene.h"
@@ -50,75 +51,26 @@ struct ConvergenceConfig {
 // multiples of 4, seeds == 0, fewer than two N in the fit range).
 void finalize(ConvergenceConfig& config);
 
-struct PointReference {
-  ShadingPoint point;
-  ReferenceValue reference;
-};
-struct RegionReferences {
-  std::string region;
-  std::string method;  // "closed-form" or "quadrature"
-  std::vector<PointReference> points;
-};
-
 // References of every region (closed form for fully lit regions, quadrature otherwise).
 std::vector<RegionReferences> compute_references(const ConvergenceConfig& config);
 
-class ConvergenceResult {
+// The study's curves (methods: the strategies' names) with the configuration and references.
+class ConvergenceResult : public CurveTable {
  public:
   ConvergenceConfig config;
   std::vector<RegionReferences> references;
 
-  std::size_t curve_index(std::size_t region, std::size_t strategy, std::size_t sequence) const {
-    return (region * config.strategies.size() + strategy) * config.sequences.size() + sequence;
-  }
-  std::size_t curves() const {
-    return config.regions.size() * config.strategies.size() * config.sequences.size();
-  }
-  // Lookups by name; nullopt when the region, strategy or sequence was not part of the run.
-  std::optional<std::size_t> find_curve(std::string_view region, std::string_view strategy,
-                                        std::string_view sequence) const;
-  std::optional<std::size_t> find_n(uint32_t n) const;
-  // Indices of ns inside the fit range.
-  std::vector<std::size_t> fit_indices() const;
-
-  // RMS over points and seeds of (estimate - reference) at ns[k]; with replicate weights
-  // (a SeedBootstrap row) when given, else every seed once. rel_rmse divides each error by its
-  // reference first.
-  double rmse(std::size_t curve, std::size_t k, std::span<const uint32_t> weights = {}) const;
-  double rel_rmse(std::size_t curve, std::size_t k, std::span<const uint32_t> weights = {}) const;
-  // Least-squares slope of log rmse vs log N over the fit range.
-  std::optional<double> slope(std::size_t curve, std::span<const uint32_t> weights = {}) const;
-
-  // Per-seed sums over the region's points of squared (relative) errors: [curve][k][seed].
-  // Filled by run_convergence; a test may fill them to make a synthetic result.
-  std::vector<double> sse, rel_sse;
   std::size_t points_per_region(std::size_t region) const {
     return references[region].points.size();
   }
-  double& sse_at(std::size_t curve, std::size_t k, std::size_t seed) {
-    return sse[(curve * config.ns.size() + k) * config.seeds + seed];
-  }
-  double& rel_sse_at(std::size_t curve, std::size_t k, std::size_t seed) {
-    return rel_sse[(curve * config.ns.size() + k) * config.seeds + seed];
-  }
-  // Sizes sse and rel_sse for the configuration (zeros).
+  // Sets the curve axes from config and references and sizes the per-seed sums (zeros).
+  // Filled by run_convergence; a test may fill them to make a synthetic result.
   void allocate();
-
- private:
-  double mean_square(const std::vector<double>& data, std::size_t curve, std::size_t k,
-                     std::span<const uint32_t> weights) const;
 };
 
 // Runs the study (both cores: jobs are (sequence, seed) pairs; each writes its own slots, so
 // the numbers do not depend on the thread count). The config is finalized first.
 ConvergenceResult run_convergence(ConvergenceConfig config);
-
-// One fitted curve for the outputs.
-struct CurveFit {
-  std::size_t curve = 0;
-  std::optional<double> slope, slope_se;
-};
-std::vector<CurveFit> fit_all(const ConvergenceResult& result, const SeedBootstrap& bootstrap);
 
 // The bootstrap every output of a run uses (replicates and seed from the config).
 SeedBootstrap make_bootstrap(const ConvergenceConfig& config);

@@ -10,6 +10,9 @@
 //    shape (tangents to the disk and to the shadow cone, rim-shadow crossings) and integrated
 //    by adaptive Gauss-Legendre after a substitution that removes the square-root behaviour
 //    at tangents.
+#include <string>
+#include <vector>
+
 #include "study/scene.h"
 
 namespace disklab::study {
@@ -31,5 +34,16 @@ struct ReferenceValue {
 // receiver's horizon. `rel_tol` is the target error relative to the result.
 ReferenceValue irradiance_quadrature(const Scene& scene, const ShadingPoint& sp,
                                      double rel_tol = 1e-14);
+
+// A region's shading points with their references, as the studies report them.
+struct PointReference {
+  ShadingPoint point;
+  ReferenceValue reference;
+};
+struct RegionReferences {
+  std::string region;
+  std::string method;  // how the values were computed, e.g. "closed-form", "quadrature"
+  std::vector<PointReference> points;
+};
 
 }  // namespace disklab::study
