@@ -1,8 +1,9 @@
 """RMS error vs sample count for one region, laid out like Christensen 2018, Figs. 5-6.
 
 Usage: convergence.py --out PNG --csv convergence.csv --fits convergence_fits.csv --region R
-                      [--title T]
-One log-log panel per strategy (two columns, in the CSV's order), one curve per sequence with
+                      [--title T] [--method-column strategy]
+One log-log panel per strategy (or per value of --method-column, e.g. the variance study's
+"map"; two columns, in the CSV's order), one curve per sequence with
 its fitted slope in the legend; faint lines show the reference slopes -0.5, -0.75, -1, -1.5.
 """
 import argparse
@@ -24,6 +25,7 @@ def main():
     ap.add_argument("--fits", required=True)
     ap.add_argument("--region", required=True)
     ap.add_argument("--title", default="")
+    ap.add_argument("--method-column", default="strategy")
     a = ap.parse_args()
 
     curves = {}  # strategy -> sequence -> [(n, rmse)]
@@ -32,7 +34,7 @@ def main():
         for r in csv.DictReader(f):
             if r["region"] != a.region:
                 continue
-            curves.setdefault(r["strategy"], {}).setdefault(r["sequence"], []).append(
+            curves.setdefault(r[a.method_column], {}).setdefault(r["sequence"], []).append(
                 (int(r["n"]), float(r["rmse"])))
             if r["sequence"] not in sequences:
                 sequences.append(r["sequence"])
@@ -42,7 +44,7 @@ def main():
     with open(a.fits, newline="") as f:
         for r in csv.DictReader(f):
             if r["region"] == a.region and r["slope"]:
-                slopes[(r["strategy"], r["sequence"])] = float(r["slope"])
+                slopes[(r[a.method_column], r["sequence"])] = float(r["slope"])
 
     values = [e for per in curves.values() for pts in per.values() for _, e in pts if e > 0]
     ymin, ymax = min(values) / 1.5, max(values) * 1.5

@@ -557,8 +557,10 @@ std::vector<ClaimOutcome> evaluate_claims(const std::vector<Claim>& claims, cons
             std::snprintf(buf, sizeof buf, "%+.2f from the claim", m - c);
             break;
           case RuleKind::factor:
-          case RuleKind::at_most:
             std::snprintf(buf, sizeof buf, "x%.2f the claim", m / c);
+            break;
+          case RuleKind::at_most:
+            std::snprintf(buf, sizeof buf, "%.3g, above %.3g", m, c);
             break;
           case RuleKind::crossover:
             if (std::isinf(m))

@@ -1,5 +1,7 @@
 #include "study/estimator.h"
 
+#include <algorithm>
+#include <array>
 #include <stdexcept>
 
 #include "disklab/math/constants.h"
@@ -46,6 +48,43 @@ void progressive_irradiance(const Scene& scene, const ShadingPoint& sp,
       sum += s.weight * irradiance_integrand(scene, sp, scene.light.point(s.point));
     while (k < ns.size() && ns[k] == i + 1) {
       out[k] = area * sum / (i + 1);
+      ++k;
+    }
+  }
+}
+
+ellipse::AnyMap light_map(ellipse::MapKind kind, const Scene& scene, const ShadingPoint& sp) {
+  const DiskLight& l = scene.light;
+  return ellipse::AnyMap::make(kind, ellipse::Disk{l.center, l.normal, l.radius, l.two_sided},
+                               sp.position);
+}
+
+void progressive_irradiance(const Scene& scene, const ShadingPoint& sp, const ellipse::AnyMap& map,
+                            std::span<const Point2> u, std::span<const uint32_t> ns,
+                            std::span<double> out, std::span<uint64_t> newton) {
+  if (out.size() != ns.size()) throw std::invalid_argument("progressive_irradiance: sizes differ");
+  const auto copies = static_cast<uint32_t>(map.copies());
+  if (!ns.empty() && ns.back() > static_cast<uint64_t>(u.size()) * copies)
+    throw std::invalid_argument("progressive_irradiance: fewer points than the largest N");
+  const double radiance = scene.light.radiance;
+  auto value = [&](const ellipse::EllipseSample& s) {
+    if (!s.valid) return 0.0;
+    const double cos_o = s.direction.dot(sp.normal);
+    if (!(cos_o > 0.0) || occluded(scene, sp.position, s.point)) return 0.0;
+    return radiance * cos_o / s.pdf;
+  };
+  std::array<ellipse::EllipseSample, 4> copy;
+  double sum = 0.0;
+  std::size_t k = 0;
+  for (uint32_t i = 0; i < u.size() && k < ns.size(); ++i) {
+    int iterations = 0;
+    const int m = map.sample_copies(u[i], copy, newton.empty() ? nullptr : &iterations);
+    for (int c = 0; c < m; ++c)
+      sum += value(copy[c]);
+    if (!newton.empty()) ++newton[std::min<std::size_t>(iterations, newton.size() - 1)];
+    const uint64_t done = static_cast<uint64_t>(i + 1) * copies;
+    while (k < ns.size() && ns[k] == done) {
+      out[k] = sum / static_cast<double>(done);
       ++k;
     }
   }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "disklab/disk/strategy.h"
+#include "disklab/ellipse/any_map.h"
 #include "disklab/sequence/sequence.h"
 #include "study/scene.h"
 
@@ -37,5 +38,17 @@ uint32_t square_points_needed(disk::Strategy strategy, uint32_t count);
 void progressive_irradiance(const Scene& scene, const ShadingPoint& sp,
                             std::span<const AreaSample> samples, std::span<const uint32_t> ns,
                             std::span<double> out);
+
+// The ellipse map of the light seen from `sp` (its two-sidedness included).
+ellipse::AnyMap light_map(ellipse::MapKind kind, const Scene& scene, const ShadingPoint& sp);
+
+// Solid-angle estimates of the irradiance at `sp` with `map` (built for sp) for every N in `ns`
+// (increasing): out[k] = (1/N) sum_{i < N} L max(0, w_i . n_o) V(o, x_i) / pdf_i, x_i the
+// sample's point on the disk. A rejected candidate (gamito, tabulated) is a sample of value 0;
+// radial4's four copies of a square point are four samples, so N/4 points of `u` are used.
+// When `newton` is not empty, newton[min(it, size - 1)] counts each root solve's iterations.
+void progressive_irradiance(const Scene& scene, const ShadingPoint& sp, const ellipse::AnyMap& map,
+                            std::span<const Point2> u, std::span<const uint32_t> ns,
+                            std::span<double> out, std::span<uint64_t> newton = {});
 
 }  // namespace disklab::study

@@ -349,4 +349,50 @@ ReferenceValue irradiance_quadrature(const Scene& scene, const ShadingPoint& sp,
   return {value, in.error + rounding};
 }
 
+ReferenceValue irradiance_rim(const DiskLight& light, const ShadingPoint& sp, double rel_tol) {
+  const Vec3 w = light.center - sp.position;
+  const Vec3& n_o = sp.normal;
+  const double R = light.radius;
+  // Lowest rim point over the horizon: min_t (w + R e(t)) . n_o = w . n_o - R |P n_o|.
+  const double ux = light.axis_x.dot(n_o), uy = light.axis_y.dot(n_o);
+  if (!(w.dot(n_o) - R * std::hypot(ux, uy) > 0.0))
+    throw std::domain_error("irradiance_rim: part of the disk is on or below the horizon");
+  if (!(R > 0.0) || light.radiance == 0.0) return {0.0, 0.0};
+  // n_o . (x cross x') / |x|^2 at rim angle t, x' = dx/dt.
+  auto term = [&](double t) {
+    const double c = std::cos(t), sn = std::sin(t);
+    const Vec3 x = w + R * (c * light.axis_x + sn * light.axis_y);
+    const Vec3 xp = R * (c * light.axis_y - sn * light.axis_x);
+    return n_o.dot(x.cross(xp)) / x.squaredNorm();
+  };
+  // Neumaier-compensated sums of the terms and of their magnitudes.
+  double sum = 0.0, comp = 0.0, abs_sum = 0.0;
+  auto add = [&](double v) {
+    const double t = sum + v;
+    comp += std::fabs(sum) >= std::fabs(v) ? (sum - t) + v : (v - t) + sum;
+    sum = t;
+    abs_sum += std::fabs(v);
+  };
+  constexpr int kFirst = 16, kMaxNodes = 1 << 20;
+  for (int j = 0; j < kFirst; ++j)
+    add(term(math::kTwoPi * j / kFirst));
+  double prev = math::kTwoPi / kFirst * (sum + comp), diff = 0.0, rounding = 0.0;
+  int m = kFirst;
+  for (;;) {
+    for (int j = 0; j < m; ++j)
+      add(term(math::kTwoPi * (j + 0.5) / m));
+    m *= 2;
+    const double cur = math::kTwoPi / m * (sum + comp);
+    diff = std::fabs(cur - prev);
+    prev = cur;
+    // Each term is good to a few ulps of its magnitude; the compensated sum adds about one.
+    rounding = 8.0 * kEps * math::kTwoPi / m * abs_sum;
+    // Two levels that agree to within rounding cannot be told apart any further.
+    if (m >= 64 && (diff <= rel_tol * std::fabs(cur) || diff <= 2.0 * rounding)) break;
+    if (m >= kMaxNodes) break;
+  }
+  const double scale = 0.5 * std::fabs(light.radiance);
+  return {scale * std::fabs(prev), scale * (diff + rounding)};
+}
+
 }  // namespace disklab::study

@@ -35,6 +35,17 @@ struct ReferenceValue {
 ReferenceValue irradiance_quadrature(const Scene& scene, const ShadingPoint& sp,
                                      double rel_tol = 1e-14);
 
+// The unoccluded irradiance of a uniform disk (either side, so one- and two-sided lights alike
+// where the point sees the emitting face) lying wholly above the receiver's horizon, as a
+// boundary integral: E = L n_o . (1/2) oint (x cross dx) / |x|^2 over the rim, x = rim - o
+// (the vector irradiance of a region whose boundary is the rim; Lambert's polygon formula
+// in the limit of many edges). The integrand is periodic and analytic in the rim angle, so
+// the trapezoid rule converges geometrically; nodes double until two levels agree to
+// `rel_tol`, and the error estimate is that difference plus the summation's rounding.
+// Throws std::domain_error when part of the rim is on or below the horizon.
+ReferenceValue irradiance_rim(const DiskLight& light, const ShadingPoint& sp,
+                              double rel_tol = 1e-15);
+
 // A region's shading points with their references, as the studies report them.
 struct PointReference {
   ShadingPoint point;
