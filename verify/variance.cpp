@@ -154,8 +154,8 @@ std::string fmt(const char* f, double v) {
 
 struct ImageRow {
   std::string map, sequence;
-  double mse = 0.0, rel_mse = 0.0, mse_se = 0.0, ns_per_sample = 0.0, ratio = 0.0,
-         efficiency = 0.0, efficiency_vs_area = 0.0;
+  double mse = 0.0, rel_mse = 0.0, mse_se = 0.0, ns_per_sample = 0.0, ratio = 0.0, efficiency = 0.0,
+         efficiency_vs_area = 0.0;
 };
 
 std::vector<ImageRow> image_rows(const VarianceResult& r) {
@@ -172,8 +172,8 @@ std::vector<ImageRow> image_rows(const VarianceResult& r) {
       row.mse = std::pow(t.rmse(curve, 0), 2);
       row.rel_mse = std::pow(t.rel_rmse(curve, 0), 2);
       row.mse_se = boot.standard_error([&](std::span<const uint32_t> w) {
-                          return std::optional<double>(std::pow(t.rmse(curve, 0, w), 2));
-                        })
+                         return std::optional<double>(std::pow(t.rmse(curve, 0, w), 2));
+                       })
                        .value_or(0.0);
       row.ns_per_sample = r.cost[m].ns_per_sample;
       row.ratio = r.cost[m].ratio_to_area;
@@ -254,6 +254,42 @@ std::string slope_tables(const VarianceResult& r, const std::vector<study::Curve
   return md;
 }
 
+// Maps sorted by MSE at N = spp, per sequence (rows) and image / region (columns): where the
+// ordering of Fig. 7 changes between regions, this shows how.
+std::string ordering_table(const VarianceResult& r) {
+  const uint32_t spp = r.config.spp;
+  std::vector<std::pair<const study::CurveTable*, std::size_t>> columns{{&r.image, 0}};
+  for (std::size_t reg = 0; reg < r.curves.axes.regions.size(); ++reg)
+    columns.emplace_back(&r.curves, reg);
+  std::string md = "| sequence | image |";
+  for (const auto& name : r.curves.axes.regions)
+    md += " " + name + " |";
+  md += "\n| --- |";
+  for (std::size_t i = 0; i < columns.size(); ++i)
+    md += " --- |";
+  md += "\n";
+  for (std::size_t q = 0; q < r.config.sequences.size(); ++q) {
+    md += "| " + r.config.sequences[q] + " |";
+    for (const auto& [table, reg] : columns) {
+      const auto k = table->find_n(spp);
+      if (!k) {
+        md += " - |";
+        continue;
+      }
+      std::vector<std::pair<double, std::string>> order;
+      for (std::size_t m = 0; m < r.map_names.size(); ++m)
+        order.emplace_back(table->rmse(table->curve_index(reg, m, q), *k), r.map_names[m]);
+      std::sort(order.begin(), order.end());
+      std::string cell;
+      for (const auto& [e, name] : order)
+        cell += (cell.empty() ? "" : " < ") + name;
+      md += " " + cell + " |";
+    }
+    md += "\n";
+  }
+  return md;
+}
+
 // The memo's open question, answered from the radial4 claims' outcomes.
 std::string radial4_answer(const std::vector<study::Claim>& claims,
                            const std::vector<study::ClaimOutcome>& outcomes) {
@@ -307,8 +343,9 @@ Outputs make_outputs(const VarianceResult& r) {
   meta["image"] = {{"size", c.image.size},
                    {"x0", c.image.lo},
                    {"x1", c.image.hi},
-                   {"raw", "variance_reference.f64: float64 little-endian, row-major, row 0 = "
-                           "largest y"},
+                   {"raw",
+                    "variance_reference.f64: float64 little-endian, row-major, row 0 = "
+                    "largest y"},
                    {"quadrature_pixels", r.image_reference.quadrature_pixels}};
   for (const auto& region : c.regions)
     meta["regions"].push_back({{"name", region.grid.name},
@@ -363,8 +400,8 @@ Outputs make_outputs(const VarianceResult& r) {
                   "," + std::to_string(n.max) + "," + std::to_string(n.solves) + "\n";
     for (std::size_t b = 0; b < n.histogram.size(); ++b)
       if (n.histogram[b] > 0)
-        o.newton_csv += r.map_names[m] + "," + std::to_string(b) + "," +
-                        std::to_string(n.histogram[b]) + "\n";
+        o.newton_csv +=
+            r.map_names[m] + "," + std::to_string(b) + "," + std::to_string(n.histogram[b]) + "\n";
     j["cost"].push_back({{"map", r.map_names[m]},
                          {"setup_ns", k.setup_ns},
                          {"sample_ns", k.sample_ns},
@@ -416,12 +453,15 @@ Outputs make_outputs(const VarianceResult& r) {
         " interleaved repetitions in this run; efficiency = 1 / (MSE x time per pixel).\n\n";
   md += "## Headline: image MSE at " + std::to_string(c.spp) + " spp and cost\n\n" +
         headline(r, rows);
+  md += "\n## Ordering by MSE at N = " + std::to_string(c.spp) +
+        " (Fig. 7: radial < parallel ~ ld-radial < Gamito << area)\n\n" + ordering_table(r);
   md += "\n## The memo's open question: radial4\n\n" + radial4_answer(claims, outcomes) + "\n";
-  md += "\n## Cost and Newton-Raphson iterations\n\n| map | set-up (ns) | per sample (ns) | "
-        "per sample at " +
-        std::to_string(c.spp) +
-        " spp (ns) | vs area | Newton mean | Newton max |\n| --- | ---: | ---: | ---: | ---: | "
-        "---: | ---: |\n";
+  md +=
+      "\n## Cost and Newton-Raphson iterations\n\n| map | set-up (ns) | per sample (ns) | "
+      "per sample at " +
+      std::to_string(c.spp) +
+      " spp (ns) | vs area | Newton mean | Newton max |\n| --- | ---: | ---: | ---: | ---: | "
+      "---: | ---: |\n";
   for (std::size_t m = 0; m < r.map_names.size(); ++m) {
     const study::MapCost& k = r.cost[m];
     md += "| " + r.map_names[m] + " | " + fmt("%.0f", k.setup_ns) + " | " +
@@ -484,15 +524,15 @@ void write_outputs(const fs::path& dir, const VarianceResult& r, const Outputs& 
             (dir / ("variance_image_" + q + ".f64")).string(), "--maps", join(r.map_names),
             "--table", (dir / "variance_images.csv").string(), "--sequence", q});
     for (const auto& region : r.config.regions)
-      plot("convergence", "variance_" + region.grid.name + ".png", region.grid.name,
-           {"--csv", (dir / "variance.csv").string(), "--fits",
-            (dir / "variance_fits.csv").string(), "--region", region.grid.name,
-            "--method-column", "map", "--title",
-            "RMS error vs N, " + region.grid.name + " (" + std::to_string(r.config.seeds) +
-                " seeds)"});
-    plot("variance_time", "variance_equal_time.png", "RMS vs time",
-         {"--csv", (dir / "variance.csv").string(), "--cost",
-          (dir / "variance_cost.csv").string()});
+      plot(
+          "convergence", "variance_" + region.grid.name + ".png", region.grid.name,
+          {"--csv", (dir / "variance.csv").string(), "--fits", (dir / "variance_fits.csv").string(),
+           "--region", region.grid.name, "--method-column", "map", "--title",
+           "RMS error vs N, " + region.grid.name + " (" + std::to_string(r.config.seeds) +
+               " seeds)"});
+    plot(
+        "variance_time", "variance_equal_time.png", "RMS vs time",
+        {"--csv", (dir / "variance.csv").string(), "--cost", (dir / "variance_cost.csv").string()});
     md += figures;
   }
   write_file_atomic(dir / "variance.md", md);
@@ -534,12 +574,11 @@ int report_variance(const ReportOptions& options) {
   const Outputs o = make_outputs(r);
   write_outputs(options.dir, r, o, true);
   if (options.claims)
-    *options.claims += "### Guillén et al. (`disklab variance" +
-                       std::string(options.quick ? " --quick" : "") + "`, " +
-                       std::to_string(r.config.image_randomizations) + " image randomizations, " +
-                       std::to_string(r.config.seeds) +
-                       " seeds per region; details in [variance.md](variance.md))\n\n" +
-                       o.claims_markdown;
+    *options.claims +=
+        "### Guillén et al. (`disklab variance" + std::string(options.quick ? " --quick" : "") +
+        "`, " + std::to_string(r.config.image_randomizations) + " image randomizations, " +
+        std::to_string(r.config.seeds) +
+        " seeds per region; details in [variance.md](variance.md))\n\n" + o.claims_markdown;
   return 0;
 }
 
@@ -564,16 +603,14 @@ std::function<int()> setup_variance(CLI::App& sub) {
       ->capture_default_str();
   auto* max_n = sub.add_option("--max-n", state->max_n, "Largest N (power of two, <= 65536)")
                     ->capture_default_str();
-  sub.add_option("--min-n", state->min_n, "Smallest N (power of two >= 16)")
-      ->capture_default_str();
+  sub.add_option("--min-n", state->min_n, "Smallest N (power of two >= 16)")->capture_default_str();
   sub.add_option("--fit-min", state->fit_min, "Slopes fit N in [fit-min, max-n] (power of two)")
       ->capture_default_str();
   sub.add_option("--maps", state->maps,
                  "Comma-separated subset (default all): " + join(ellipse::map_names()));
   sub.add_option("--sequences", state->sequences,
                  "Comma-separated (default random,sobol-owen,pmj02):" + sequences);
-  sub.add_option("--regions", state->regions,
-                 "Comma-separated subset (default all): near mid far");
+  sub.add_option("--regions", state->regions, "Comma-separated subset (default all): near mid far");
   auto* reps = sub.add_option("--timing-reps", state->timing_reps,
                               "Timing repetitions; the cost is their median (1 .. 100)")
                    ->capture_default_str();

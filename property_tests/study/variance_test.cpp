@@ -295,8 +295,8 @@ TEST(MapEstimator, IidVarianceMatchesQuadrature) {
       m4 /= kIidSamples;
       const double se = std::sqrt(std::max(0.0, m4 - m2 * m2) / kIidSamples);
       std::printf("  %s at (%.2f, %.2f): variance %.6g +- %.2g, quadrature %.6g\n",
-                  std::string(ellipse::map_name(kind)).c_str(), p.position.x(), p.position.y(),
-                  m2, se, predicted);
+                  std::string(ellipse::map_name(kind)).c_str(), p.position.x(), p.position.y(), m2,
+                  se, predicted);
       EXPECT_LE(std::fabs(m2 - predicted), z * se) << ellipse::map_name(kind);
     }
   }

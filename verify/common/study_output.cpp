@@ -20,8 +20,8 @@ TableOutput curve_rows(const study::CurveTable& t, const std::string& method_col
     const std::string &m = t.method_of(curve), &q = t.sequence_of(curve);
     for (std::size_t k = 0; k < t.ns().size(); ++k) {
       const double e = t.rmse(curve, k), rel = t.rel_rmse(curve, k);
-      o.csv += region + "," + m + "," + q + "," + std::to_string(t.ns()[k]) + "," + fmt17(e) +
-               "," + fmt17(rel) + "\n";
+      o.csv += region + "," + m + "," + q + "," + std::to_string(t.ns()[k]) + "," + fmt17(e) + "," +
+               fmt17(rel) + "\n";
       o.json.push_back({{"region", region},
                         {method_column, m},
                         {"sequence", q},
@@ -60,9 +60,9 @@ TableOutput reference_rows(const std::vector<study::RegionReferences>& reference
   o.csv = "region,x,y,E,error_estimate,method\n";
   for (const auto& refs : references)
     for (const auto& p : refs.points) {
-      o.csv += refs.region + "," + fmt17(p.point.position.x()) + "," +
-               fmt17(p.point.position.y()) + "," + fmt17(p.reference.value) + "," +
-               fmt17(p.reference.error_estimate) + "," + refs.method + "\n";
+      o.csv += refs.region + "," + fmt17(p.point.position.x()) + "," + fmt17(p.point.position.y()) +
+               "," + fmt17(p.reference.value) + "," + fmt17(p.reference.error_estimate) + "," +
+               refs.method + "\n";
       o.json.push_back({{"region", refs.region},
                         {"x", p.point.position.x()},
                         {"y", p.point.position.y()},

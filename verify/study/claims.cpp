@@ -133,8 +133,7 @@ Opt min_log_rmse(const CurveTable& r, std::size_t region,
   return best;
 }
 // log rmse(a) - log rmse(b) at ns[k].
-Opt log_ratio_at(const CurveTable& r, std::size_t a, std::size_t b, std::size_t k,
-                 Weights w) {
+Opt log_ratio_at(const CurveTable& r, std::size_t a, std::size_t b, std::size_t k, Weights w) {
   const Opt la = log_rmse(r, a, k, w), lb = log_rmse(r, b, k, w);
   if (!la || !lb) return std::nullopt;
   return *la - *lb;
@@ -511,7 +510,8 @@ std::vector<Claim> memo_claims(const std::vector<std::string>& sequences) {
   return std::move(b.claims);
 }
 
-std::vector<ClaimOutcome> evaluate_claims(const std::vector<Claim>& claims, const CurveTable& result,
+std::vector<ClaimOutcome> evaluate_claims(const std::vector<Claim>& claims,
+                                          const CurveTable& result,
                                           const SeedBootstrap& bootstrap) {
   std::vector<ClaimOutcome> out;
   const auto& ns = result.ns();
@@ -647,8 +647,7 @@ std::string claims_markdown(const std::vector<Claim>& claims,
         "differs once the run reaches twice the claimed N;\n";
   if (uses(RuleKind::at_most))
     md += "- \"up to c\": at most c reproduced, at most 1.5 c roughly;\n";
-  md +=
-      "- not measured: the run lacks the sequence, method or sample count the claim needs.\n\n";
+  md += "- not measured: the run lacks the sequence, method or sample count the claim needs.\n\n";
   md += ratios_note + "\n";
 
   std::map<std::string, int> tally;

@@ -15,8 +15,7 @@ std::optional<std::size_t> index_of(const std::vector<std::string>& names, std::
 }
 }  // namespace
 
-std::optional<std::size_t> CurveTable::find_curve(std::string_view region,
-                                                  std::string_view method,
+std::optional<std::size_t> CurveTable::find_curve(std::string_view region, std::string_view method,
                                                   std::string_view sequence) const {
   const auto r = index_of(axes.regions, region), m = index_of(axes.methods, method),
              q = index_of(axes.sequences, sequence);
@@ -76,7 +75,8 @@ double CurveTable::rel_rmse(std::size_t curve, std::size_t k,
   return std::sqrt(mean_square(rel_sse, curve, k, weights));
 }
 
-std::optional<double> CurveTable::slope(std::size_t curve, std::span<const uint32_t> weights) const {
+std::optional<double> CurveTable::slope(std::size_t curve,
+                                        std::span<const uint32_t> weights) const {
   std::vector<double> x, y;
   for (std::size_t k : fit_indices()) {
     const double e = rmse(curve, k, weights);

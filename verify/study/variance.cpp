@@ -96,8 +96,8 @@ bool may_be_shadowed(const Scene& scene, const ShadingPoint& sp) {
 ReferenceValue irradiance_reference(const Scene& scene, const ShadingPoint& sp, bool* quadrature) {
   const bool shadowed = may_be_shadowed(scene, sp);
   if (quadrature) *quadrature = shadowed;
-  const ReferenceValue v = shadowed ? irradiance_quadrature(scene, sp, kQuadratureTol)
-                                    : irradiance_rim(scene.light, sp);
+  const ReferenceValue v =
+      shadowed ? irradiance_quadrature(scene, sp, kQuadratureTol) : irradiance_rim(scene.light, sp);
   if (!(v.error_estimate <= kRequiredRelError * std::fabs(v.value)) && v.value != 0.0)
     throw std::runtime_error("irradiance reference: error estimate above 1e-10 relative");
   return v;
@@ -188,8 +188,7 @@ void run_curves(const VarianceConfig& c, VarianceResult& r, const std::function<
                 [&](int64_t job) {
                   const std::size_t q = static_cast<std::size_t>(job) / c.seeds;
                   const std::size_t s = static_cast<std::size_t>(job) % c.seeds;
-                  const auto seq =
-                      sequence::make_sequence(c.sequences[q], c.first_seed + s, n_max);
+                  const auto seq = sequence::make_sequence(c.sequences[q], c.first_seed + s, n_max);
                   std::vector<Point2> u(n_max);
                   for (uint32_t i = 0; i < n_max; ++i)
                     u[i] = seq->at(i);
@@ -338,8 +337,7 @@ void run_timing(const VarianceConfig& c, VarianceResult& r, const std::function<
 }  // namespace
 
 uint64_t work_units(const VarianceConfig& c) {
-  return static_cast<uint64_t>(c.image.size) +
-         static_cast<uint64_t>(c.sequences.size()) * c.seeds +
+  return static_cast<uint64_t>(c.image.size) + static_cast<uint64_t>(c.sequences.size()) * c.seeds +
          static_cast<uint64_t>(c.image_randomizations) * c.image.size +
          static_cast<uint64_t>(c.timing_repetitions);
 }

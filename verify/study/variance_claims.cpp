@@ -98,9 +98,8 @@ std::vector<Claim> guillen_claims(const VarianceResult& r) {
   auto add = [&](std::string id, std::string section, std::string text, std::string measured_as,
                  Rule rule, std::vector<std::string> regions, std::vector<std::string> seqs,
                  std::vector<std::string> maps, Measure m, bool bootstrap = true) {
-    out.push_back({std::move(id), std::move(section), std::move(text), std::move(measured_as),
-                   rule, std::move(regions), std::move(seqs), std::move(maps), std::move(m),
-                   bootstrap});
+    out.push_back({std::move(id), std::move(section), std::move(text), std::move(measured_as), rule,
+                   std::move(regions), std::move(seqs), std::move(maps), std::move(m), bootstrap});
   };
   const std::string n_text = std::to_string(spp);
   // Fig. 7's MSEs: area 0.0043451, Gamito 3.7234e-5, parallel 1.2195e-5, radial 3.1013e-6,
@@ -119,9 +118,9 @@ std::vector<Claim> guillen_claims(const VarianceResult& r) {
       char text[160];
       std::snprintf(text, sizeof text, "Fig. 7: MSE(%s) / MSE(radial) = %.3g (%s)", map.c_str(),
                     ratio, q.c_str());
-      add("fig7." + map + "." + q, "fig7", text,
-          "MSE(" + map + ") / MSE(radial) at N = " + n_text, {RuleKind::factor, ratio},
-          all_regions, {q}, {map, "radial"}, mse_ratio(map, "radial", q, spp));
+      add("fig7." + map + "." + q, "fig7", text, "MSE(" + map + ") / MSE(radial) at N = " + n_text,
+          {RuleKind::factor, ratio}, all_regions, {q}, {map, "radial"},
+          mse_ratio(map, "radial", q, spp));
     }
   }
   std::vector<std::string> uniform;
@@ -135,7 +134,8 @@ std::vector<Claim> guillen_claims(const VarianceResult& r) {
       list += (list.empty() ? "" : ", ") + m;
     add("iid.same-variance", "iid",
         "With iid (random) input every uniform solid-angle map has the same variance per sample "
-        "(" + list + ")",
+        "(" +
+            list + ")",
         "max / min image MSE over those maps (the regions' 16 points share each seed's "
         "points, too few randomizations to resolve 10%)",
         {RuleKind::about_equal, 1.0}, {"image"}, {"random"}, uniform,
