@@ -389,7 +389,8 @@ Outputs make_outputs(const VarianceResult& r) {
                            {"efficiency_vs_area", row.efficiency_vs_area}});
   }
   o.cost_csv =
-      "map,setup_ns,sample_ns,ns_per_sample,ratio_to_area,newton_mean,newton_max,root_solves\n";
+      "map,setup_ns,sample_ns,ns_per_sample,ratio_to_area,newton_mean,newton_per_sample,newton_max,"
+      "root_solves\n";
   o.newton_csv = "map,iterations,solves\n";
   j["cost"] = nlohmann::json::array();
   for (std::size_t m = 0; m < r.map_names.size(); ++m) {
@@ -397,7 +398,8 @@ Outputs make_outputs(const VarianceResult& r) {
     const study::NewtonStats& n = r.newton[m];
     o.cost_csv += r.map_names[m] + "," + fmt17(k.setup_ns) + "," + fmt17(k.sample_ns) + "," +
                   fmt17(k.ns_per_sample) + "," + fmt17(k.ratio_to_area) + "," + fmt17(n.mean) +
-                  "," + std::to_string(n.max) + "," + std::to_string(n.solves) + "\n";
+                  "," + fmt17(n.per_sample) + "," + std::to_string(n.max) + "," +
+                  std::to_string(n.solves) + "\n";
     for (std::size_t b = 0; b < n.histogram.size(); ++b)
       if (n.histogram[b] > 0)
         o.newton_csv +=
@@ -408,6 +410,8 @@ Outputs make_outputs(const VarianceResult& r) {
                          {"ns_per_sample", k.ns_per_sample},
                          {"ratio_to_area", k.ratio_to_area},
                          {"newton_mean", n.mean},
+                         {"newton_per_sample", n.per_sample},
+                         {"newton_per_sample", n.per_sample},
                          {"newton_max", n.max},
                          {"root_solves", n.solves},
                          {"newton_histogram", n.histogram}});
@@ -460,14 +464,14 @@ Outputs make_outputs(const VarianceResult& r) {
       "\n## Cost and Newton-Raphson iterations\n\n| map | set-up (ns) | per sample (ns) | "
       "per sample at " +
       std::to_string(c.spp) +
-      " spp (ns) | vs area | Newton mean | Newton max |\n| --- | ---: | ---: | ---: | ---: | "
-      "---: | ---: |\n";
+      " spp (ns) | vs area | Newton per solve | per sample | max |\n| --- | ---: | ---: | "
+      "---: | ---: | ---: | ---: | ---: |\n";
   for (std::size_t m = 0; m < r.map_names.size(); ++m) {
     const study::MapCost& k = r.cost[m];
     md += "| " + r.map_names[m] + " | " + fmt("%.0f", k.setup_ns) + " | " +
           fmt("%.1f", k.sample_ns) + " | " + fmt("%.1f", k.ns_per_sample) + " | " +
           fmt("%.2f", k.ratio_to_area) + " | " + fmt("%.2f", r.newton[m].mean) + " | " +
-          std::to_string(r.newton[m].max) + " |\n";
+          fmt("%.2f", r.newton[m].per_sample) + " | " + std::to_string(r.newton[m].max) + " |\n";
   }
   md += "\n## Slopes (log RMS vs log N) and RMS at N = 256\n" + slope_tables(r, fits);
   md += "\n## Claims\n\n" + o.claims_markdown;
@@ -640,8 +644,9 @@ std::function<int()> setup_variance(CLI::App& sub) {
       "                          per-pixel set-up amortized, its ratio to area's, and\n"
       "                          efficiency = 1 / (MSE x seconds per pixel)\n"
       "  variance_cost.csv       map,setup_ns,sample_ns,ns_per_sample,ratio_to_area,newton_mean,\n"
-      "                          newton_max,root_solves: set-up alone, each further sample,\n"
-      "                          Newton iterations per root solve over every image sample\n"
+      "                          newton_per_sample,newton_max,root_solves: set-up alone, each\n"
+      "                          further sample, Newton iterations per root solve (and per\n"
+      "                          sample: radial4 shares a solve among 4) over the image samples\n"
       "  variance_newton.csv     map,iterations,solves: the iteration histogram\n"
       "  variance_references.csv region,x,y,E,error_estimate,method per region point\n"
       "  variance_reference.f64  the reference image: size x size float64, little-endian,\n"

@@ -330,6 +330,9 @@ TEST(Variance, NumbersDoNotDependOnTheThreadCount) {
   // radial solves a root per sample; area none.
   EXPECT_GT(one.newton[1].solves, 0u);
   EXPECT_EQ(one.newton[0].max, 0);
+  // radial4 (index 2) shares each solve among its four copies.
+  EXPECT_DOUBLE_EQ(one.newton[2].per_sample, one.newton[2].mean / 4.0);
+  EXPECT_DOUBLE_EQ(one.newton[1].per_sample, one.newton[1].mean);
   // Area's cost ratio to itself is 1 by construction; every cost is positive.
   EXPECT_EQ(one.cost[0].ratio_to_area, 1.0);
   for (const MapCost& c : one.cost)

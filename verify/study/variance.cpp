@@ -258,7 +258,8 @@ void run_images(const VarianceConfig& c, VarianceResult& r, const std::function<
         r.image.rel_sse_at(curve, 0, rand) += job_rel[slot];
       }
   }
-  for (NewtonStats& s : r.newton) {
+  for (std::size_t m = 0; m < nm; ++m) {
+    NewtonStats& s = r.newton[m];
     double sum = 0.0;
     for (int b = 0; b < kNewtonBins; ++b) {
       s.solves += s.histogram[b];
@@ -266,6 +267,7 @@ void run_images(const VarianceConfig& c, VarianceResult& r, const std::function<
       if (s.histogram[b] > 0) s.max = b;
     }
     s.mean = s.solves > 0 ? sum / static_cast<double>(s.solves) : 0.0;
+    s.per_sample = s.mean / ellipse::map_copies(c.maps[m]);
   }
 }
 
@@ -390,7 +392,8 @@ VarianceResult run_variance(VarianceConfig config) {
   ia.seeds = c.image_randomizations;
   r.image.allocate_curves();
   r.images.assign(c.maps.size() * c.sequences.size(), std::vector<double>(ia.points[0], 0.0));
-  r.newton.assign(c.maps.size(), NewtonStats{std::vector<uint64_t>(kNewtonBins, 0), 0, 0.0, 0});
+  r.newton.assign(c.maps.size(),
+                  NewtonStats{std::vector<uint64_t>(kNewtonBins, 0), 0, 0.0, 0.0, 0});
 
   run_curves(c, r, tick);
   run_images(c, r, tick);

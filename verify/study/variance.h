@@ -80,7 +80,8 @@ struct MapCost {
 struct NewtonStats {
   std::vector<uint64_t> histogram;  // [iterations] root solves (the last bin: that many or more)
   uint64_t solves = 0;
-  double mean = 0.0;  // per root solve
+  double mean = 0.0;        // per root solve
+  double per_sample = 0.0;  // per sample (radial4: one solve serves its four copies)
   int max = 0;
 };
 
