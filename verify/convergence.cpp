@@ -290,73 +290,48 @@ Outputs make_outputs(const ConvergenceResult& r) {
   return o;
 }
 
-struct Written {
-  std::vector<std::string> pngs;
-};
-
 // Writes every output into `dir` (created if missing). Plots are optional: a machine without
 // matplotlib still gets the data and a warning.
-Written write_outputs(const fs::path& dir, const ConvergenceResult& r, const Outputs& o,
-                      bool plots) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw UsageError("--out: cannot create folder '" + dir.string() + "': " + ec.message());
+void write_outputs(const fs::path& dir, const ConvergenceResult& r, const Outputs& o, bool plots) {
+  create_out_dir(dir);
   write_file_atomic(dir / "convergence.csv", o.csv);
   write_file_atomic(dir / "convergence_fits.csv", o.fits_csv);
   write_file_atomic(dir / "convergence_references.csv", o.refs_csv);
   write_file_atomic(dir / "convergence.json", o.json);
   std::string md = o.markdown;
-  Written w;
   if (plots) {
-    std::string figures = "\n## Figures\n\n";
+    md += "\n## Figures\n\n";
     for (const auto& region : r.config.regions) {
       const std::string png = "convergence_" + region.grid.name + ".png";
-      try {
-        run_plot("convergence",
-                 {"--csv", (dir / "convergence.csv").string(), "--fits",
-                  (dir / "convergence_fits.csv").string(), "--region", region.grid.name, "--title",
-                  "RMS error vs N, " + region.grid.name + " (" + std::to_string(r.config.seeds) +
-                      " seeds)"},
-                 dir / png);
-        figures += "![" + region.grid.name + "](" + png + ")\n\n";
-        w.pngs.push_back(png);
-      } catch (const std::runtime_error& e) {
-        std::fprintf(stderr, "disklab: warning: %s not written: %s\n", png.c_str(), e.what());
-        figures += "(" + png + " not written: the plot script failed; see stderr.)\n\n";
-      }
+      md += plot_markdown(
+          "convergence",
+          {"--csv", (dir / "convergence.csv").string(), "--fits",
+           (dir / "convergence_fits.csv").string(), "--region", region.grid.name, "--title",
+           "RMS error vs N, " + region.grid.name + " (" + std::to_string(r.config.seeds) +
+               " seeds)"},
+          dir, png, region.grid.name);
     }
-    md += figures;
   }
   write_file_atomic(dir / "convergence.md", md);
-  return w;
 }
 
 ConvergenceResult run_study(ConvergenceConfig config) {
-  Progress progress("convergence", static_cast<uint64_t>(config.sequences.size()) * config.seeds);
-  config.progress = [&progress](uint64_t, uint64_t) { progress.tick(); };
-  ConvergenceResult r = study::run_convergence(std::move(config));
-  progress.finish();
-  r.config.progress = nullptr;
-  return r;
+  const uint64_t total = static_cast<uint64_t>(config.sequences.size()) * config.seeds;
+  return run_with_progress("convergence", total, std::move(config), [](ConvergenceConfig c) {
+    return study::run_convergence(std::move(c));
+  });
 }
 
 int run_convergence_command(const ConvergenceState& s) {
-  if (s.out.empty()) throw UsageError("--out: empty folder name");
-  const fs::path dir(s.out);
-  std::error_code ec;
-  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
-    throw UsageError("--out: '" + s.out + "' exists and is not a folder");
+  const fs::path dir = check_out_dir(s.out);
   const ConvergenceConfig config = make_config(s);
   const auto start = std::chrono::steady_clock::now();
   const ConvergenceResult r = run_study(config);
-  const Outputs o = make_outputs(r);
-  write_outputs(dir, r, o, !s.no_plots);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!std::getenv("DISKLAB_QUIET"))
-    std::fprintf(stderr, "convergence: %zu curves x %zu N x %u seeds in %.1f s; see %s\n",
-                 r.curves(), r.config.ns.size(), r.config.seeds, seconds,
-                 (dir / "convergence.md").c_str());
+  write_outputs(dir, r, make_outputs(r), !s.no_plots);
+  print_finished("convergence",
+                 std::to_string(r.curves()) + " curves x " + std::to_string(r.config.ns.size()) +
+                     " N x " + std::to_string(r.config.seeds) + " seeds",
+                 start, dir / "convergence.md");
   return 0;
 }
 

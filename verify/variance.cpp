@@ -487,9 +487,7 @@ void write_raw(const fs::path& target, const std::vector<double>& values) {
 }
 
 void write_outputs(const fs::path& dir, const VarianceResult& r, const Outputs& o, bool plots) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) throw UsageError("--out: cannot create folder '" + dir.string() + "': " + ec.message());
+  create_out_dir(dir);
   write_file_atomic(dir / "variance.csv", o.csv);
   write_file_atomic(dir / "variance_fits.csv", o.fits_csv);
   write_file_atomic(dir / "variance_references.csv", o.refs_csv);
@@ -510,14 +508,8 @@ void write_outputs(const fs::path& dir, const VarianceResult& r, const Outputs& 
   if (plots) {
     std::string figures = "\n## Figures\n\n";
     auto plot = [&](const std::string& script, const std::string& png, const std::string& title,
-                    std::vector<std::string> args) {
-      try {
-        run_plot(script, args, dir / png);
-        figures += "![" + title + "](" + png + ")\n\n";
-      } catch (const std::runtime_error& e) {
-        std::fprintf(stderr, "disklab: warning: %s not written: %s\n", png.c_str(), e.what());
-        figures += "(" + png + " not written: the plot script failed; see stderr.)\n\n";
-      }
+                    const std::vector<std::string>& args) {
+      figures += plot_markdown(script, args, dir, png, title);
     };
     const std::string size = std::to_string(r.config.image.size);
     plot("variance_images", "variance_reference.png", "reference",
@@ -543,31 +535,21 @@ void write_outputs(const fs::path& dir, const VarianceResult& r, const Outputs& 
 }
 
 VarianceResult run_study(VarianceConfig config) {
-  Progress progress("variance", study::work_units(config));
-  config.progress = [&progress](uint64_t, uint64_t) { progress.tick(); };
-  VarianceResult r = study::run_variance(std::move(config));
-  progress.finish();
-  r.config.progress = nullptr;
-  return r;
+  const uint64_t total = study::work_units(config);
+  return run_with_progress("variance", total, std::move(config),
+                           [](VarianceConfig c) { return study::run_variance(std::move(c)); });
 }
 
 int run_variance_command(const VarianceState& s) {
-  if (s.out.empty()) throw UsageError("--out: empty folder name");
-  const fs::path dir(s.out);
-  std::error_code ec;
-  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
-    throw UsageError("--out: '" + s.out + "' exists and is not a folder");
+  const fs::path dir = check_out_dir(s.out);
   const VarianceConfig config = make_config(s);
   const auto start = std::chrono::steady_clock::now();
   const VarianceResult r = run_study(config);
-  const Outputs o = make_outputs(r);
-  write_outputs(dir, r, o, !s.no_plots);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!std::getenv("DISKLAB_QUIET"))
-    std::fprintf(stderr, "variance: %zu maps x %zu sequences in %.1f s; see %s\n",
-                 r.map_names.size(), r.config.sequences.size(), seconds,
-                 (dir / "variance.md").c_str());
+  write_outputs(dir, r, make_outputs(r), !s.no_plots);
+  print_finished("variance",
+                 std::to_string(r.map_names.size()) + " maps x " +
+                     std::to_string(r.config.sequences.size()) + " sequences",
+                 start, dir / "variance.md");
   return 0;
 }
 
@@ -656,7 +638,7 @@ std::function<int()> setup_variance(CLI::App& sub) {
       "  variance.md             headline, radial4's answer, cost, slopes, claims with verdicts\n"
       "  variance_reference.png, variance_images_<sequence>.png (images and error images like\n"
       "                          Fig. 7), variance_<region>.png, variance_equal_time.png\n"
-      "Full run: about a minute on 2 cores; --quick: a few seconds.\n"
+      "Full run: 1-2 minutes on 2 cores; --quick: about 14 s (3 without plots).\n"
       "Examples:\n"
       "  disklab variance --out var\n"
       "  disklab variance --quick --out /tmp/var\n"

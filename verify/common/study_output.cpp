@@ -2,7 +2,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
+#include "command.h"
 #include "common/output.h"
 
 namespace disklab::cli {
@@ -91,6 +93,43 @@ nlohmann::json claims_json(const std::vector<study::Claim>& claims,
                  {"note", out.note}});
   }
   return j;
+}
+
+std::filesystem::path check_out_dir(const std::string& out) {
+  if (out.empty()) throw UsageError("--out: empty folder name");
+  const std::filesystem::path dir(out);
+  std::error_code ec;
+  if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
+    throw UsageError("--out: '" + out + "' exists and is not a folder");
+  return dir;
+}
+
+void create_out_dir(const std::filesystem::path& dir) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw UsageError("--out: cannot create folder '" + dir.string() + "': " + ec.message());
+}
+
+std::string plot_markdown(const std::string& script, const std::vector<std::string>& args,
+                          const std::filesystem::path& dir, const std::string& png,
+                          const std::string& title) {
+  try {
+    run_plot(script, args, dir / png);
+    return "![" + title + "](" + png + ")\n\n";
+  } catch (const std::runtime_error& e) {
+    std::fprintf(stderr, "disklab: warning: %s not written: %s\n", png.c_str(), e.what());
+    return "(" + png + " not written: the plot script failed; see stderr.)\n\n";
+  }
+}
+
+void print_finished(const char* label, const std::string& what,
+                    std::chrono::steady_clock::time_point start,
+                    const std::filesystem::path& markdown) {
+  if (std::getenv("DISKLAB_QUIET")) return;
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::fprintf(stderr, "%s: %s in %.1f s; see %s\n", label, what.c_str(), seconds,
+               markdown.c_str());
 }
 
 std::string slope_cell(const study::CurveFit& f) {

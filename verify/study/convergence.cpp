@@ -38,29 +38,9 @@ std::vector<StudyRegion> memo_regions() {
 void finalize(ConvergenceConfig& c) {
   if (c.strategies.empty())
     c.strategies.assign(std::begin(disk::kAllStrategies), std::end(disk::kAllStrategies));
-  const std::vector<std::string> all = sequence::sequence_names();
-  if (c.sequences.empty()) c.sequences = all;
-  for (const std::string& name : c.sequences)
-    if (std::find(all.begin(), all.end(), name) == all.end())
-      throw std::invalid_argument("unknown sequence '" + name + "'");
-  if (c.ns.empty())
-    for (uint32_t n = 16; n <= 4096; n *= 2)
-      c.ns.push_back(n);
-  for (std::size_t k = 0; k < c.ns.size(); ++k) {
-    // Multiples of 4 keep the four-copy strategies' groups whole.
-    if (!std::has_single_bit(c.ns[k]) || c.ns[k] < 4)
-      throw std::invalid_argument("N = " + std::to_string(c.ns[k]) + " is not a power of two >= 4");
-    if (k > 0 && c.ns[k] <= c.ns[k - 1])
-      throw std::invalid_argument("the sample counts must increase");
-  }
-  if (c.seeds == 0) throw std::invalid_argument("seeds must be at least 1");
+  if (c.sequences.empty()) c.sequences = sequence::sequence_names();
+  check_curve_axes(c.sequences, c.ns, c.seeds, c.fit_min);
   if (c.regions.empty()) throw std::invalid_argument("no regions");
-  std::size_t in_fit = 0;
-  for (uint32_t n : c.ns)
-    in_fit += n >= c.fit_min;
-  if (in_fit < 2)
-    throw std::invalid_argument("fewer than two sample counts in the fit range N >= " +
-                                std::to_string(c.fit_min));
 }
 
 std::vector<RegionReferences> compute_references(const ConvergenceConfig& config) {

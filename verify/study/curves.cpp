@@ -3,7 +3,11 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <stdexcept>
+
+#include "disklab/sequence/sequence.h"
 
 namespace disklab::study {
 
@@ -86,6 +90,29 @@ std::optional<double> CurveTable::slope(std::size_t curve,
   }
   if (x.size() < 2) return std::nullopt;
   return fit_log_log(x, y).slope;
+}
+
+void check_curve_axes(const std::vector<std::string>& sequences, std::vector<uint32_t>& ns,
+                      uint32_t seeds, uint32_t fit_min) {
+  const std::vector<std::string> all = sequence::sequence_names();
+  for (const std::string& name : sequences)
+    if (std::find(all.begin(), all.end(), name) == all.end())
+      throw std::invalid_argument("unknown sequence '" + name + "'");
+  if (ns.empty())
+    for (uint32_t n = 16; n <= 4096; n *= 2)
+      ns.push_back(n);
+  for (std::size_t k = 0; k < ns.size(); ++k) {
+    if (!std::has_single_bit(ns[k]) || ns[k] < 4)
+      throw std::invalid_argument("N = " + std::to_string(ns[k]) + " is not a power of two >= 4");
+    if (k > 0 && ns[k] <= ns[k - 1]) throw std::invalid_argument("the sample counts must increase");
+  }
+  if (seeds == 0) throw std::invalid_argument("seeds must be at least 1");
+  std::size_t in_fit = 0;
+  for (uint32_t n : ns)
+    in_fit += n >= fit_min;
+  if (in_fit < 2)
+    throw std::invalid_argument("fewer than two sample counts in the fit range N >= " +
+                                std::to_string(fit_min));
 }
 
 std::vector<CurveFit> fit_all(const CurveTable& table, const SeedBootstrap& bootstrap,

@@ -78,6 +78,12 @@ class CurveTable {
                      std::span<const uint32_t> weights) const;
 };
 
+// Checks a study's curve axes (std::invalid_argument naming the problem): every sequence in the
+// registry; ns (filled with 16 .. 4096 by powers of two when empty) increasing powers of two
+// >= 4, so that four-copy methods' groups stay whole; seeds >= 1; two or more N >= fit_min.
+void check_curve_axes(const std::vector<std::string>& sequences, std::vector<uint32_t>& ns,
+                      uint32_t seeds, uint32_t fit_min);
+
 // One fitted curve for the outputs.
 struct CurveFit {
   std::size_t curve = 0;

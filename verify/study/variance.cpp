@@ -131,22 +131,8 @@ void finalize(VarianceConfig& c) {
   if (c.maps.empty())
     for (const std::string& name : ellipse::map_names())
       c.maps.push_back(*ellipse::parse_map(name));
-  const std::vector<std::string> all = sequence::sequence_names();
   if (c.sequences.empty()) c.sequences = {"random", "sobol-owen", "pmj02"};
-  for (const std::string& name : c.sequences)
-    if (std::find(all.begin(), all.end(), name) == all.end())
-      throw std::invalid_argument("unknown sequence '" + name + "'");
-  if (c.ns.empty())
-    for (uint32_t n = 16; n <= 4096; n *= 2)
-      c.ns.push_back(n);
-  for (std::size_t k = 0; k < c.ns.size(); ++k) {
-    // Multiples of 4 keep radial4's groups of copies whole.
-    if (!std::has_single_bit(c.ns[k]) || c.ns[k] < 4)
-      throw std::invalid_argument("N = " + std::to_string(c.ns[k]) + " is not a power of two >= 4");
-    if (k > 0 && c.ns[k] <= c.ns[k - 1])
-      throw std::invalid_argument("the sample counts must increase");
-  }
-  if (c.seeds == 0) throw std::invalid_argument("seeds must be at least 1");
+  check_curve_axes(c.sequences, c.ns, c.seeds, c.fit_min);
   if (c.image_randomizations == 0)
     throw std::invalid_argument("image randomizations must be at least 1");
   if (c.spp < 4 || c.spp % 4 != 0)
@@ -154,12 +140,6 @@ void finalize(VarianceConfig& c) {
   if (c.image.size < 1) throw std::invalid_argument("the image needs at least one pixel");
   if (c.timing_repetitions < 1) throw std::invalid_argument("timing repetitions must be >= 1");
   if (c.regions.empty()) throw std::invalid_argument("no regions");
-  std::size_t in_fit = 0;
-  for (uint32_t n : c.ns)
-    in_fit += n >= c.fit_min;
-  if (in_fit < 2)
-    throw std::invalid_argument("fewer than two sample counts in the fit range N >= " +
-                                std::to_string(c.fit_min));
 }
 
 SeedBootstrap make_curve_bootstrap(const VarianceConfig& c) {
