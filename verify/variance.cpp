@@ -638,7 +638,7 @@ std::function<int()> setup_variance(CLI::App& sub) {
       "  variance.md             headline, radial4's answer, cost, slopes, claims with verdicts\n"
       "  variance_reference.png, variance_images_<sequence>.png (images and error images like\n"
       "                          Fig. 7), variance_<region>.png, variance_equal_time.png\n"
-      "Full run: 1-2 minutes on 2 cores; --quick: about 14 s (3 without plots).\n"
+      "Full run: 1-2 minutes on 2 cores; --quick: about 14 s (9 without plots).\n"
       "Examples:\n"
       "  disklab variance --out var\n"
       "  disklab variance --quick --out /tmp/var\n"
