@@ -14,9 +14,9 @@
 //  - the point of a type is not a free offset: it is inherited from the child that shares it,
 //    p_t = (cell + p_child) / 4, so offsets are chosen through the rules (4^-k precision along
 //    the chain of sharing children) and every level is exactly consistent with the next;
-//  - the blue-noise objective is a compact repulsive kernel energy (1 - d^2/h^2)^3 over each
-//    level (and, for the visiting orders, over each prefix size m 16^k), minimized by greedy
-//    coordinate descent with exact acceptance, not the paper's optimizer.
+//  - the blue-noise objective is a two-scale compact repulsive kernel energy (see kernel())
+//    over each level (and, for the visiting orders, over each prefix size m 16^k), minimized by
+//    greedy coordinate descent with exact acceptance, not the paper's optimizer.
 //
 // Every step is deterministic: PCG32 from the seed, integer tie-breaks, no libm transcendental
 // (the kernel is a polynomial), so the same build reproduces the table bit for bit.
@@ -53,11 +53,11 @@ struct Params {
   int types = 256;      // tile types (the paper publishes 1,936; see the README for why fewer)
   int levels = 3;       // finest lattice level optimized: 16^levels points per root
   int roots = 8;        // root types whose lattices are optimized together in one sweep
-  int sweeps = 6;       // rounds of point and rule updates over all types
+  int sweeps = 10;      // rounds of point and rule updates over all types
   double radius = 2.0;  // kernel support h in units of the point spacing 1/sqrt(n) of the set
   int candidates = 32;  // point positions tried per type and sweep
   double short_radius = 0.85;  // h_short in spacings
-  double short_weight = 3.0;   // g_short
+  double short_weight = 10.0;  // g_short
 };
 
 struct Table {
