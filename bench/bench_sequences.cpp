@@ -10,7 +10,8 @@
 //  - point/<name>: Point2 at(index) of the concrete generator (no virtual call), indices walked
 //    in order 0, 1, 2, ... (wrapping at the table size for the tabulated ones), as a renderer's
 //    progressive use does. Randomization is part of at(): rotation, xor, Owen hash, digit
-//    permutation; `random` pays its O(log i) random-access jump.
+//    permutation; `random` pays its O(log i) random-access jump; `art` its O(log16 i) descent
+//    through the tile table (Ahmed et al. 2017) plus the toroidal shift.
 //  - point/sobol-plain: the unrandomized Sobol' (0,2) point, to show what scrambling adds.
 //  - point-virtual/<name>: the same through `Sequence::at` from make_sequence (the CLI's path).
 //  - setup/<name>/<C>: one-time construction of a table of C points (best-candidate, pmj02,
@@ -36,6 +37,7 @@
 #include <vector>
 
 #include "bench_common.h"
+#include "disklab/sequence/art.h"
 #include "disklab/sequence/halton.h"
 #include "disklab/sequence/random.h"
 #include "disklab/sequence/sequence.h"
@@ -146,6 +148,7 @@ void BM_Setup(benchmark::State& state) {
 struct Instances {
   seq::RandomSequence random{kSeed};
   seq::BestCandidate best_candidate{kSeed, kTable};
+  seq::ArtSequence art{kSeed};
   seq::HaltonRotated halton_rotated{kSeed};
   seq::HaltonScrambled halton_scrambled{kSeed};
   seq::SobolRotated sobol_rotated{kSeed};
@@ -174,6 +177,7 @@ void register_benchmarks() {
   // Memo order, as sequence_names(); a name without a point/ benchmark is reported below.
   add_point("random", &in.random, 0);
   add_point("best-candidate", &in.best_candidate, kTable);
+  add_point("art", &in.art, 0);
   add_point("halton-rotated", &in.halton_rotated, 0);
   add_point("halton-scrambled", &in.halton_scrambled, 0);
   add_point("sobol-rotated", &in.sobol_rotated, 0);

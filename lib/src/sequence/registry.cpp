@@ -3,6 +3,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "disklab/sequence/art.h"
 #include "disklab/sequence/halton.h"
 #include "disklab/sequence/random.h"
 #include "disklab/sequence/sequence.h"
@@ -27,13 +28,17 @@ std::unique_ptr<Sequence> tabulated(const char* name, uint64_t seed, uint32_t ca
   return std::make_unique<SequenceAdapter<Gen>>(name, Gen(seed, capacity));
 }
 
-// Memo order (Christensen 2018, Fig. 2). Ahmed ART (c) belongs between best-candidate and
-// halton-rotated; it has its own issue.
+// Memo order (Christensen 2018, Fig. 2): Ahmed's ART is (c), after best candidates.
 const Entry kEntries[] = {
-    {"random", analytic<RandomSequence>},        {"best-candidate", tabulated<BestCandidate>},
-    {"halton-rotated", analytic<HaltonRotated>}, {"halton-scrambled", analytic<HaltonScrambled>},
-    {"sobol-rotated", analytic<SobolRotated>},   {"sobol-xor", analytic<SobolXor>},
-    {"sobol-owen", analytic<SobolOwen>},         {"pmj02", tabulated<Pmj02>},
+    {"random", analytic<RandomSequence>},
+    {"best-candidate", tabulated<BestCandidate>},
+    {"art", analytic<ArtSequence>},
+    {"halton-rotated", analytic<HaltonRotated>},
+    {"halton-scrambled", analytic<HaltonScrambled>},
+    {"sobol-rotated", analytic<SobolRotated>},
+    {"sobol-xor", analytic<SobolXor>},
+    {"sobol-owen", analytic<SobolOwen>},
+    {"pmj02", tabulated<Pmj02>},
     {"pmj02bn", tabulated<Pmj02BlueNoise>},
 };
 
