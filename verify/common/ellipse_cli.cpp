@@ -22,6 +22,9 @@ void add_ellipse_options(CLI::App& sub, EllipseOptions& o) {
   sub.add_option("--radius", o.radius, "Disk radius R > 0 (with --map)");
   sub.add_option("--point", o.point, "Shading point X,Y,Z (with --map)");
   sub.add_flag("--two-sided", o.two_sided, "The disk emits from both faces (with --map)");
+  sub.add_option("--receiver-normal", o.receiver_normal,
+                 "Receiver normal X,Y,Z at the shading point, any non-zero length: the cosine "
+                 "that --map projected samples (required with it, refused with other maps)");
 }
 
 void check_ellipse_exclusive(const EllipseOptions& o, const std::string& strategy) {
@@ -71,6 +74,22 @@ ellipse::AnyMap make_ellipse_map(const EllipseOptions& o) {
   require_one_of(o.map, ellipse::map_names(), "--map");
   const SceneInput in = parse_scene(o.center, o.normal, o.radius, o.point, o.two_sided);
   const Vec3& p = in.point;
+  const bool projected = o.map == "projected";
+  if (projected && o.receiver_normal.empty())
+    throw UsageError("--receiver-normal: missing (projected samples the receiver's cosine)");
+  if (!projected && !o.receiver_normal.empty())
+    throw UsageError("--receiver-normal: only --map projected uses it");
+  if (projected) {
+    const Vec3 n = parse_vec3(o.receiver_normal, "--receiver-normal");
+    if (!(n.squaredNorm() > 0.0))
+      throw UsageError("--receiver-normal: '" + o.receiver_normal + "' has zero length");
+    ellipse::AnyMap m = ellipse::AnyMap::make(o.map, in.disk, p, n);
+    if (!m.valid())
+      throw UsageError("degenerate geometry: the point " + o.point +
+                       " sees no part of the disk above its horizon (receiver normal " +
+                       o.receiver_normal + "), or sees no disk at all");
+    return m;
+  }
   ellipse::AnyMap m = ellipse::AnyMap::make(o.map, in.disk, p);
   if (!m.valid())
     throw UsageError("degenerate geometry: the point " + o.point + " sees no disk (it is " +
@@ -82,7 +101,8 @@ ellipse::AnyMap make_ellipse_map(const EllipseOptions& o) {
 
 std::string describe_scene(const EllipseOptions& o) {
   return "c=(" + o.center + ") n=(" + o.normal + ") r=" + o.radius + " o=(" + o.point + ")" +
-         (o.two_sided ? " two-sided" : "");
+         (o.two_sided ? " two-sided" : "") +
+         (o.receiver_normal.empty() ? "" : " n_o=(" + o.receiver_normal + ")");
 }
 
 std::string format_sample(const ellipse::EllipseSample& s) {

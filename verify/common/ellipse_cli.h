@@ -13,18 +13,20 @@ namespace disklab::cli {
 struct EllipseOptions {
   std::string map;  // empty: not an ellipse run
   std::string center, normal, radius, point;
+  std::string receiver_normal;  // projected only
   bool two_sided = false;
 
   // Whether any disk/point option was given (they are an error without --map).
   bool any_scene_option() const {
-    return !center.empty() || !normal.empty() || !radius.empty() || !point.empty() || two_sided;
+    return !center.empty() || !normal.empty() || !radius.empty() || !point.empty() ||
+           !receiver_normal.empty() || two_sided;
   }
 };
 
 // "area, gamito, ..." (for --help and messages).
 std::string ellipse_map_list();
 
-// Adds --map, --center, --normal, --radius, --point, --two-sided bound to `o`.
+// Adds --map, --center, --normal, --radius, --point, --two-sided, --receiver-normal bound to `o`.
 void add_ellipse_options(CLI::App& sub, EllipseOptions& o);
 
 // Checks that --map and --strategy are not both given, and that scene options come with --map.
@@ -42,8 +44,9 @@ SceneInput parse_scene(const std::string& center, const std::string& normal,
                        const std::string& radius, const std::string& point, bool two_sided,
                        bool allow_zero_radius = false);
 
-// Validates the options (known name; the scene as parse_scene; the point sees the disk) and
-// builds the map. Throws UsageError with one line.
+// Validates the options (known name; the scene as parse_scene; the point sees the disk;
+// --receiver-normal non-zero, given for projected and only for it) and builds the map. Throws
+// UsageError with one line.
 ellipse::AnyMap make_ellipse_map(const EllipseOptions& o);
 
 // One-line description of the scene for titles: "c=(...) n=(...) r=... o=(...)".

@@ -56,7 +56,7 @@ void progressive_irradiance(const Scene& scene, const ShadingPoint& sp,
 ellipse::AnyMap light_map(ellipse::MapKind kind, const Scene& scene, const ShadingPoint& sp) {
   const DiskLight& l = scene.light;
   return ellipse::AnyMap::make(kind, ellipse::Disk{l.center, l.normal, l.radius, l.two_sided},
-                               sp.position);
+                               sp.position, sp.normal);
 }
 
 void progressive_irradiance(const Scene& scene, const ShadingPoint& sp, const ellipse::AnyMap& map,

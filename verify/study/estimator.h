@@ -39,7 +39,8 @@ void progressive_irradiance(const Scene& scene, const ShadingPoint& sp,
                             std::span<const AreaSample> samples, std::span<const uint32_t> ns,
                             std::span<double> out);
 
-// The ellipse map of the light seen from `sp` (its two-sidedness included).
+// The ellipse map of the light seen from `sp` (its two-sidedness included; projected samples
+// sp's cosine).
 ellipse::AnyMap light_map(ellipse::MapKind kind, const Scene& scene, const ShadingPoint& sp);
 
 // Solid-angle estimates of the irradiance at `sp` with `map` (built for sp) for every N in `ns`

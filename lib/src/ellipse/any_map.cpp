@@ -27,13 +27,15 @@ static_assert(kAlternative<MapKind::area, AreaSampler> &&
               kAlternative<MapKind::ld_radial, LdRadialMap> &&
               kAlternative<MapKind::radial4, Radial4Map> &&
               kAlternative<MapKind::tabulated, TabulatedMap> &&
-              kAlternative<MapKind::radial_fast, RadialFastMap>);
+              kAlternative<MapKind::radial_fast, RadialFastMap> &&
+              kAlternative<MapKind::projected, ProjectedMap>);
 
 }  // namespace
 
 const std::vector<std::string>& map_names() {
   static const std::vector<std::string> names = {
-      "area", "gamito", "parallel", "radial", "ld-radial", "radial4", "tabulated", "radial-fast"};
+      "area",    "gamito",    "parallel",    "radial",   "ld-radial",
+      "radial4", "tabulated", "radial-fast", "projected"};
   return names;
 }
 
@@ -53,15 +55,18 @@ bool map_has_inverse(MapKind kind) {
 }
 
 bool map_is_uniform(MapKind kind) {
-  // area: density |o - x|^2 / (A cos); gamito, tabulated: proposal densities.
-  return kind != MapKind::area && kind != MapKind::gamito && kind != MapKind::tabulated;
+  // area: density |o - x|^2 / (A cos); gamito, tabulated: proposal densities; projected: the
+  // receiver's cosine.
+  return kind != MapKind::area && kind != MapKind::gamito && kind != MapKind::tabulated &&
+         kind != MapKind::projected;
 }
 
 int map_copies(MapKind kind) {
   return kind == MapKind::radial4 ? 4 : 1;
 }
 
-AnyMap AnyMap::make(std::string_view name, const Disk& disk, const Vec3& o) {
+namespace {
+MapKind parse_map_or_throw(std::string_view name) {
   const auto kind = parse_map(name);
   if (!kind) {
     std::string valid;
@@ -70,7 +75,23 @@ AnyMap AnyMap::make(std::string_view name, const Disk& disk, const Vec3& o) {
     throw std::invalid_argument("unknown spherical-ellipse map '" + std::string(name) +
                                 "' (valid: " + valid + ")");
   }
-  return make(*kind, disk, o);
+  return *kind;
+}
+}  // namespace
+
+AnyMap AnyMap::make(std::string_view name, const Disk& disk, const Vec3& o) {
+  return make(parse_map_or_throw(name), disk, o);
+}
+
+AnyMap AnyMap::make(std::string_view name, const Disk& disk, const Vec3& o,
+                    const Vec3& receiver_normal) {
+  return make(parse_map_or_throw(name), disk, o, receiver_normal);
+}
+
+AnyMap AnyMap::make(MapKind kind, const Disk& disk, const Vec3& o,
+                    const Vec3& receiver_normal) noexcept {
+  if (kind == MapKind::projected) return AnyMap(ProjectedMap::make(disk, o, receiver_normal));
+  return make(kind, disk, o);
 }
 
 AnyMap AnyMap::make(MapKind kind, const Disk& disk, const Vec3& o) noexcept {
@@ -91,6 +112,8 @@ AnyMap AnyMap::make(MapKind kind, const Disk& disk, const Vec3& o) noexcept {
       return AnyMap(TabulatedMap::make(disk, o));
     case MapKind::radial_fast:
       return AnyMap(RadialFastMap::make(disk, o));
+    case MapKind::projected:
+      return AnyMap(ProjectedMap::make(disk, o));
   }
   return AnyMap(AreaSampler{});  // not reached: every kind is listed
 }
@@ -131,6 +154,8 @@ double AnyMap::pdf(const Vec3& direction) const {
 }
 
 std::optional<Point2> AnyMap::invert(const Vec3& direction) const {
+  // projected's image is the part of the disk above the receiver's horizon.
+  if (const auto* p = std::get_if<ProjectedMap>(&map_)) return p->invert(direction);
   if (!has_inverse() || !contains(direction)) return std::nullopt;
   const Vec3 d = direction.normalized();
   const MapGeometry& g = geometry();

@@ -2,7 +2,7 @@
 // Every spherical-ellipse sampler behind one value type, chosen by its CLI name at run time (for
 // the `disklab` CLI and for renderers that read the map from a scene file).
 //
-// Names: area, gamito, parallel, radial, ld-radial, radial4, tabulated, radial-fast.
+// Names: area, gamito, parallel, radial, ld-radial, radial4, tabulated, radial-fast, projected.
 //
 // Conventions (one per map family, stated once here):
 //  - sample(u) is a pure function of u for every map, so it can be inverted and stratified:
@@ -13,6 +13,9 @@
 //    reflections, counter-clockwise from quadrant 0, each with pdf 1/Omega; invert_copy() is
 //    their inverse). sample(u) is a full-ellipse sample, the radial map's, so that an estimator
 //    built on sample() alone stays unbiased.
+//  - projected samples max(0, w . n_o) / P (projected.h): it needs the receiver's normal n_o
+//    (the make overload that takes one); without it, n_o is the direction of the ellipse's
+//    centre. The other maps ignore n_o.
 //  - pdf is always in the solid-angle measure; `valid == false` means "no sample" (degenerate
 //    geometry or a rejected candidate), never NaN.
 //  - invert(direction) takes any non-zero direction (it need not be unit) and returns nothing
@@ -34,6 +37,7 @@
 #include "disklab/ellipse/gamito.h"
 #include "disklab/ellipse/ld_radial.h"
 #include "disklab/ellipse/parallel.h"
+#include "disklab/ellipse/projected.h"
 #include "disklab/ellipse/radial.h"
 #include "disklab/ellipse/radial4.h"
 #include "disklab/ellipse/radial_fast.h"
@@ -43,7 +47,17 @@
 
 namespace disklab::ellipse {
 
-enum class MapKind { area, gamito, parallel, radial, ld_radial, radial4, tabulated, radial_fast };
+enum class MapKind {
+  area,
+  gamito,
+  parallel,
+  radial,
+  ld_radial,
+  radial4,
+  tabulated,
+  radial_fast,
+  projected
+};
 
 // All names, in the order of MapKind.
 const std::vector<std::string>& map_names();
@@ -54,6 +68,7 @@ std::string_view map_name(MapKind kind);
 // rectangle sampler whose inverse this library does not provide).
 bool map_has_inverse(MapKind kind);
 // Whether the map is uniform in solid angle (pdf == 1/Omega for every valid sample).
+// False for area, gamito, tabulated and projected.
 bool map_is_uniform(MapKind kind);
 // Directions per square point (4 for radial4, else 1).
 int map_copies(MapKind kind);
@@ -61,15 +76,21 @@ int map_copies(MapKind kind);
 class AnyMap {
  public:
   using Variant = std::variant<AreaSampler, GamitoSampler, ParallelMap, RadialMap, LdRadialMap,
-                               Radial4Map, TabulatedMap, RadialFastMap>;
+                               Radial4Map, TabulatedMap, RadialFastMap, ProjectedMap>;
 
   // The map of `kind` for `disk` seen from the shading point `o`. Never throws, never
   // allocates; degenerate geometry gives a map with !valid().
   static AnyMap make(MapKind kind, const Disk& disk, const Vec3& o) noexcept;
+  // The same with the receiver's normal at o (any non-zero length), which projected samples
+  // the cosine of; a renderer can pass it for every kind.
+  static AnyMap make(MapKind kind, const Disk& disk, const Vec3& o,
+                     const Vec3& receiver_normal) noexcept;
   // By name, for the CLI and scene files. Throws std::invalid_argument("unknown
   // spherical-ellipse map 'x' (valid: ...)"); code built without exceptions uses parse_map and
   // the overload above.
   static AnyMap make(std::string_view name, const Disk& disk, const Vec3& o);
+  static AnyMap make(std::string_view name, const Disk& disk, const Vec3& o,
+                     const Vec3& receiver_normal);
 
   // The variant's alternatives are in MapKind's order.
   MapKind kind() const { return static_cast<MapKind>(map_.index()); }

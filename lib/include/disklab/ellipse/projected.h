@@ -1,0 +1,468 @@
+#pragma once
+// Projected-solid-angle (cosine-weighted) sampling of an oriented disk (beyond both papers):
+// density p(w) = max(0, w . n_o) / P over the disk's spherical ellipse, n_o the receiver's
+// normal and P = int max(0, w . n_o) dw (P / pi is the point-to-disk form factor). For an
+// unoccluded Lambertian receiver f / p is constant: zero variance.
+//
+// Construction, in the ellipse frame R_e (Guillén et al. 2017, Sec. 3) with n = n_o in R_e:
+//  - directions w = (sin t cos phi, sin t sin phi, cos t) around the ellipse's centre z_e; the
+//    rim at the planar parametric angle s (tan s = (a/b) tan phi) is w_r(s) = (a cos s, b sin s,
+//    h_r(s)), t_r = atan2(r, h_r), r^2 = a^2 cos^2 s + b^2 sin^2 s;
+//  - along a meridian, the cosine A sin t + n_z cos t (A = n_x cos phi + n_y sin phi) has the
+//    antiderivative F(t) = A S(t) + n_z sin^2(t) / 2 in dw = sin t dt dphi, S(t) = (t - sin t
+//    cos t) / 2; the meridian's part above the horizon is [t_lo, t_hi] (t_h the horizon angle);
+//  - eps1 = C(s) / P with C the projected solid angle of the sector [0, s], by Stokes
+//    (int_R w dw = (1/2) oint w x dw on the unit sphere): the rim contributes
+//    n . (w_r x w_r') = -n_x b cos^2(alpha) cos s / h_r - n_y a cos^2(beta) sin s / h_r + n_z a b,
+//    whose antiderivative is elementary (asinh, asin), the meridians (1/2) (t_hi - t_lo) B(phi)
+//    with B = n_y cos phi - n_x sin phi, the horizon (a great circle) its arc length. Unclipped,
+//    C(2 pi) = P = pi a b n_z: the projected solid angle of a spherical ellipse is the area of
+//    its planar projection times the cosine of its centre.
+//  - eps2: F(t) = F(t_lo) + eps2 (F(t_hi) - F(t_lo)) on the meridian.
+// Both solves are safeguarded Newton with exact derivatives (2 dC/ds = 2 (F(t_hi) - F(t_lo))
+// a b / r^2, and dF/dt = sin t (A sin t + n_z cos t)). Continuous in u, so stratified input
+// stays stratified. Unclipped sectors of ellipses the series can hold use a Chebyshev series
+// of S(t_r) / r^3 in cos 2s (the radial series' machinery), free of the O(a) terms that the
+// elementary form cancels for distant disks; clipped configurations (the disk straddles the
+// receiver's horizon) split the turn at the rim's horizon crossings and use the elementary
+// form, whose rounding grows like eps / a for small ellipses.
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "disklab/ellipse/map_geometry.h"
+#include "disklab/ellipse/radial.h"
+#include "disklab/ellipse/radial_series.h"
+#include "disklab/ellipse/sampler.h"
+#include "disklab/math/constants.h"
+#include "disklab/math/roots.h"
+#include "disklab/types.h"
+
+namespace disklab::ellipse {
+
+// Both root solves stop at this residual relative to their total (P, or the meridian's F range).
+inline constexpr double kProjectedNewtonTol = 1e-15;
+
+namespace projected_detail {
+
+// S(t) = (t - sin t cos t) / 2 = (2t - sin 2t) / 4, by its Taylor series below t = 0.5 (where
+// the difference would cancel), sum_k (-1)^(k+1) (2t)^(2k+1) / (4 (2k+1)!).
+inline double S(double t) {
+  if (t < 0.5) {
+    const double x = 2.0 * t, x2 = x * x;
+    double term = x * x2 / 6.0, sum = term;
+    for (int k = 1; k < 16 && std::abs(term) > 1e-18 * sum; ++k) {
+      term *= -x2 / ((2.0 * k + 2.0) * (2.0 * k + 3.0));
+      sum += term;
+    }
+    return 0.25 * sum;
+  }
+  return 0.25 * (2.0 * t - std::sin(2.0 * t));
+}
+
+// G(r) = S(asin r) / r^3 as a function of r^2 < 1: sum_k C(2k, k) 4^-k r^2k / (2k + 3) below
+// r^2 = 1/4 (S'(r) = r^2 / sqrt(1 - r^2)), the closed form above.
+inline double G(double r2) {
+  if (r2 < 0.25) {
+    double c = 1.0, p = 1.0, sum = 1.0 / 3.0;
+    for (int k = 1; k < 40; ++k) {
+      c *= (2.0 * k - 1.0) / (2.0 * k);
+      p *= r2;
+      const double term = c * p / (2.0 * k + 3.0);
+      sum += term;
+      if (term < 1e-18 * sum) break;
+    }
+    return sum;
+  }
+  const double r = std::sqrt(r2), h = std::sqrt(std::max(0.0, 1.0 - r2));
+  return (std::atan2(r, h) - r * h) / (2.0 * r * r2);
+}
+
+}  // namespace projected_detail
+
+struct ProjectedMap {
+  // One meridian: its azimuth's cosine and sine, A and B, and the part above the horizon.
+  struct Meridian {
+    double cs = 1.0, ss = 0.0;      // cos s, sin s
+    double r2 = 0.0, r = 0.0;       // planar radius of the rim point
+    double cos_phi = 1.0, sin_phi = 0.0;
+    double A = 0.0, B = 0.0;
+    double t_r = 0.0;               // rim angle from z_e
+    double t_lo = 0.0, t_hi = 0.0;  // the part above the horizon (t_lo == t_hi: none)
+    int kind = 0;                   // 0 empty, 1 rim over apex, 2 horizon over apex, 3 rim over horizon
+  };
+
+  // A great circle meets the rim at most 4 times: at most 5 pieces of the turn.
+  static constexpr int kMaxPieces = 5;
+  // Pieces of the turn between the rim's horizon crossings (clipped configurations).
+  struct Pieces {
+    int count = 0;
+    int kind[kMaxPieces] = {};
+    double edge[kMaxPieces + 1] = {};  // s at the ends, edge[0] = 0, edge[count] = 2 pi
+    double cum[kMaxPieces + 1] = {};   // 2 C(edge[i])
+  };
+  // Unclipped: G(r(s)) = sum_m g_m cos 2ms, g_0 = g0, g_m = g[m - 1] (n == 0: elementary form).
+  // 12 terms hold every ellipse up to a ~ 0.3 (sizes the sampler under any_map.h's 512 bytes);
+  // beyond, the elementary form's rounding (~eps / a relative) is no larger than the series'.
+  static constexpr int kSeriesCapacity = 12;
+  struct Series {
+    int n = 0;
+    double g0 = 0.0;
+    double g[kSeriesCapacity] = {};
+  };
+
+  MapGeometry g;
+  Vec3 n = Vec3::UnitZ();  // the receiver normal (unit) in R_e
+  double P = 0.0;          // projected solid angle
+  bool clipped = false;
+  union {
+    Series series;  // unclipped
+    Pieces pieces;  // clipped
+  };
+
+  ProjectedMap() : series() {}
+
+  // The map for `disk` seen from `o` with the receiver normal `receiver_normal` (any non-zero
+  // length). Degenerate input, or a disk wholly below the receiver's horizon, give !valid().
+  static ProjectedMap make(const Disk& disk, const Vec3& o, const Vec3& receiver_normal) noexcept {
+    ProjectedMap m;
+    m.g = MapGeometry::make(disk, o);
+    const double len = receiver_normal.norm();
+    if (m.g.empty || !(len > 0.0) || !std::isfinite(len)) {
+      m.g.empty = true;
+      return m;
+    }
+    m.n = m.g.to_local(receiver_normal / len);
+    const double a = m.g.a, b = m.g.b, nz = m.n.z();
+    const double lateral = std::hypot(m.n.x() * a, m.n.y() * b);
+    // |n_x a cos s + n_y b sin s| <= lateral and h_r >= cos(alpha) bound w_r . n on the rim.
+    if (nz > 0.0 && nz * m.g.cos_alpha > lateral) {
+      m.make_unclipped();
+    } else if (nz < 0.0 && -nz * m.g.cos_alpha >= lateral) {
+      m.g.empty = true;  // wholly below the horizon
+      return m;
+    } else {
+      m.make_clipped();
+    }
+    if (!(m.P > 0.0) || !std::isfinite(m.P)) m.g.empty = true;
+    return m;
+  }
+  // Without a receiver normal: the cosine about the ellipse's centre direction z_e (a density
+  // positive on the whole ellipse, so f / pdf stays unbiased for any f).
+  static ProjectedMap make(const Disk& disk, const Vec3& o) noexcept {
+    const MapGeometry geo = MapGeometry::make(disk, o);
+    return make(disk, o, geo.empty ? Vec3::UnitZ() : geo.frame.z);
+  }
+
+  bool valid() const { return !g.empty; }
+  double projected_solid_angle() const { return valid() ? P : 0.0; }
+
+  // The meridian at s; `kind` >= 0 takes its range as in a piece of that kind (the limit from
+  // inside the piece, for the meridians at a piece's ends), -1 classifies it.
+  Meridian meridian(double s, int kind = -1) const {
+    return meridian(std::cos(s), std::sin(s), kind);
+  }
+  Meridian meridian(double cs, double ss, int kind) const {
+    Meridian md;
+    md.cs = cs;
+    md.ss = ss;
+    const double px = g.a * cs, py = g.b * ss;
+    md.r2 = px * px + py * py;
+    md.r = std::sqrt(md.r2);
+    md.cos_phi = px / md.r;
+    md.sin_phi = py / md.r;
+    md.A = n.x() * md.cos_phi + n.y() * md.sin_phi;
+    md.B = n.y() * md.cos_phi - n.x() * md.sin_phi;
+    md.t_r = std::atan2(md.r, g.hr_parametric(cs, ss));
+    const double nz = n.z();
+    if (kind < 0) {
+      if (nz > 0.0)
+        kind = std::atan2(nz, -md.A) < md.t_r ? 2 : 1;
+      else
+        kind = md.A > 0.0 && std::atan2(-nz, md.A) < md.t_r ? 3 : 0;
+    }
+    md.kind = kind;
+    switch (kind) {
+      case 1:  // the whole meridian
+        md.t_hi = md.t_r;
+        break;
+      case 2:  // n_z > 0: above the horizon for t < t_h = atan2(n_z, -A) in (0, pi)
+        md.t_hi = std::min(md.t_r, std::atan2(nz, -md.A));
+        break;
+      case 3:  // n_z <= 0: above it for t > t_h = atan2(-n_z, A) in [0, pi/2) (A >= 0)
+        md.t_lo = std::min(md.t_r, std::atan2(-nz, std::max(0.0, md.A)));
+        md.t_hi = md.t_r;
+        break;
+      default:
+        break;
+    }
+    return md;
+  }
+
+  double F(const Meridian& md, double t) const {
+    const double st = std::sin(t);
+    return md.A * projected_detail::S(t) + 0.5 * n.z() * st * st;
+  }
+  // 2 dC/ds.
+  double density_s(const Meridian& md) const {
+    if (md.kind == 0) return 0.0;
+    const double ab = g.a * g.b;
+    if (!clipped)
+      return ab * (n.z() + 2.0 * (n.x() * g.a * md.cs + n.y() * g.b * md.ss) *
+                               projected_detail::G(md.r2));
+    return 2.0 * (F(md, md.t_hi) - F(md, md.t_lo)) * ab / md.r2;
+  }
+
+  // int_0^s n . (w_r x w_r') ds', the rim's Stokes term.
+  double rim_term(double s, double cs, double ss) const {
+    const double ca = g.cos_alpha, cb = g.cos_beta, c = std::sqrt(g.a2_minus_b2);
+    double ic, is;
+    if (c == 0.0) {
+      ic = ss / ca;
+      is = (1.0 - cs) / cb;
+    } else {
+      const double x = c * ss / ca;
+      ic = std::asinh(x) / c;
+      // asin(p) - asin(p cs), p = c / cos(beta) = sqrt(m) < 1, as one atan2 whose numerator
+      // p D is formed without cancellation.
+      const double p = c / cb, q = p * cs;
+      const double sq = std::sqrt(std::max(0.0, 1.0 - q * q)),
+                   sp = std::sqrt(std::max(0.0, 1.0 - p * p));
+      const double D = cs >= 0.0 ? ss * ss / (sq + cs * sp) : sq - cs * sp;
+      const double num = p * D, den = sp * sq + p * q;
+      const double angle = std::atan2(num, den);
+      // angle / c = (angle / num) D / cos(beta).
+      is = num != 0.0 ? angle / num * D / cb : 0.0;
+    }
+    return -n.x() * g.b * ca * ca * ic - n.y() * g.a * cb * cb * is + n.z() * g.a * g.b * s;
+  }
+
+  // 2 C(s), s in [0, 2 pi].
+  double twice_c(double s) const {
+    if (!clipped) return twice_c_unclipped(s, meridian(s, 1));
+    const int i = piece_of(s);
+    return pieces.cum[i] + piece_part(i, pieces.edge[i], s, meridian(s, pieces.kind[i]));
+  }
+  double twice_c_unclipped(double s, const Meridian& md) const {
+    if (series.n > 0) return series_twice_c(s, md.cs, md.ss);
+    return g.alpha * n.y() - md.t_r * md.B + rim_term(s, md.cs, md.ss);
+  }
+  int piece_of(double s) const {
+    int i = 0;
+    while (i + 1 < pieces.count && s > pieces.edge[i + 1])
+      ++i;
+    return i;
+  }
+
+  // 2 x the projected solid angle of piece i between s_a (its start) and s.
+  double piece_part(int i, double s_a, double s, const Meridian& md) const {
+    const int kind = pieces.kind[i];
+    if (kind == 0) return 0.0;
+    const Meridian ma = meridian(s_a, kind);
+    double v = (ma.t_hi - ma.t_lo) * ma.B - (md.t_hi - md.t_lo) * md.B;
+    if (kind == 1 || kind == 3)
+      v += rim_term(s, md.cs, md.ss) - rim_term(s_a, ma.cs, ma.ss);
+    if (kind == 2 || kind == 3) v += horizon_arc(kind, ma, md);
+    return v;
+  }
+
+  // Arc length of the horizon between two meridians' horizon points in a piece of `kind` (2: the
+  // horizon is the upper end of the meridians' ranges, 3: the lower end; at a crossing both
+  // ends meet the rim).
+  double horizon_arc(int kind, const Meridian& m1, const Meridian& m2) const {
+    const double t1 = kind == 2 ? m1.t_hi : m1.t_lo, t2 = kind == 2 ? m2.t_hi : m2.t_lo;
+    const Vec3 w1(std::sin(t1) * m1.cos_phi, std::sin(t1) * m1.sin_phi, std::cos(t1));
+    const Vec3 w2(std::sin(t2) * m2.cos_phi, std::sin(t2) * m2.sin_phi, std::cos(t2));
+    return std::atan2(w1.cross(w2).norm(), w1.dot(w2));
+  }
+
+  // 2 C(s) by the series: a b [n_z s + 2 n_x a Jc(s) + 2 n_y b Js(s)] with Jc = int cos G,
+  // Js = int sin G, G = sum_m g_m cos 2ms.
+  double series_twice_c(double s, double cs, double ss) const {
+    const int nt = series.n;
+    auto gamma = [&](int m) {
+      if (m == 0) return series.g0;
+      return m <= nt ? series.g[m - 1] : 0.0;
+    };
+    // cos, sin of (2j + 1) s by the rotation (cos 2s, sin 2s).
+    const double c2 = cs * cs - ss * ss, s2 = 2.0 * cs * ss;
+    double ck = cs, sk = ss, jc = 0.0, js = 0.0;
+    for (int j = 0; j <= nt; ++j) {
+      const double k = 2.0 * j + 1.0;
+      const double gj = gamma(j), gj1 = gamma(j + 1);
+      const double cj = 0.5 * (gj + gj1) + (j == 0 ? 0.5 * gj : 0.0);
+      const double dj = 0.5 * (gj - gj1) + (j == 0 ? 0.5 * gj : 0.0);
+      // 1 - cos(k s) = (sin^2 ks) / (1 + cos ks) where that does not cancel.
+      const double omc = ck >= 0.0 ? sk * sk / (1.0 + ck) : 1.0 - ck;
+      jc += cj * sk / k;
+      js += dj * omc / k;
+      const double cn = ck * c2 - sk * s2;
+      sk = sk * c2 + ck * s2;
+      ck = cn;
+    }
+    return g.a * g.b * (n.z() * s + 2.0 * n.x() * g.a * jc + 2.0 * n.y() * g.b * js);
+  }
+
+  // u.x -> s.
+  double solve_s(double u1, int* iterations) const {
+    const double total = 2.0 * P, target = std::clamp(u1, 0.0, 1.0) * total;
+    double lo = 0.0, hi = math::kTwoPi, base = 0.0;
+    int piece = -1;
+    if (clipped) {
+      piece = 0;
+      while (piece + 1 < pieces.count &&
+             (target > pieces.cum[piece + 1] || pieces.kind[piece] == 0))
+        ++piece;
+      lo = pieces.edge[piece];
+      hi = pieces.edge[piece + 1];
+      base = pieces.cum[piece];
+    }
+    const double span = (clipped ? pieces.cum[piece + 1] - base : total);
+    const double frac = span > 0.0 ? std::clamp((target - base) / span, 0.0, 1.0) : 0.0;
+    auto eval = [&](double s) {
+      const Meridian md = meridian(s, clipped ? pieces.kind[piece] : 1);
+      const double v = clipped ? base + piece_part(piece, lo, s, md) : twice_c_unclipped(s, md);
+      return std::pair<double, double>(v - target, density_s(md));
+    };
+    const math::RootResult root =
+        math::safeguarded_newton(eval, lo, hi, lo + frac * (hi - lo), kProjectedNewtonTol * total,
+                                 1e-16, kRadialMaxEvaluations);
+    if (iterations) *iterations = root.iterations;
+    return root.x;
+  }
+
+  // u.y -> t on the meridian.
+  double solve_t(const Meridian& md, double u2, int* iterations) const {
+    const double f_lo = F(md, md.t_lo), f_hi = F(md, md.t_hi);
+    const double target = f_lo + std::clamp(u2, 0.0, 1.0) * (f_hi - f_lo);
+    const double s_lo = std::sin(md.t_lo), s_hi = std::sin(md.t_hi);
+    const double s2 = s_lo * s_lo + std::clamp(u2, 0.0, 1.0) * (s_hi * s_hi - s_lo * s_lo);
+    const double start = std::clamp(std::asin(std::sqrt(std::max(0.0, s2))), md.t_lo, md.t_hi);
+    auto eval = [&](double t) {
+      const double st = std::sin(t), ct = std::cos(t);
+      return std::pair<double, double>(F(md, t) - target, st * (md.A * st + n.z() * ct));
+    };
+    const math::RootResult root =
+        math::safeguarded_newton(eval, md.t_lo, md.t_hi, start,
+                                 kProjectedNewtonTol * std::abs(f_hi - f_lo), 1e-17,
+                                 kRadialMaxEvaluations);
+    if (iterations) *iterations += root.iterations;
+    return root.x;
+  }
+
+  EllipseSample sample(Point2 u, int* iterations = nullptr) const {
+    if (iterations) *iterations = 0;
+    if (g.empty || !(u.x == u.x) || !(u.y == u.y)) return {};
+    const double s = solve_s(u.x, iterations);
+    const Meridian md = meridian(s, clipped ? pieces.kind[piece_of(s)] : 1);
+    if (md.kind == 0 || !(md.t_hi > md.t_lo)) return {};
+    const double t = solve_t(md, u.y, iterations);
+    const double st = std::sin(t);
+    const Vec3 local(st * md.cos_phi, st * md.sin_phi, std::cos(t));
+    EllipseSample out;
+    out.local = local;
+    out.direction = g.to_world(local).normalized();
+    // As pdf(direction) computes it, so the two agree exactly.
+    const double cosine = g.to_local(out.direction).dot(n);
+    if (!(cosine > 0.0)) return {};  // on the horizon itself (measure zero)
+    out.point = g.hit(out.direction);
+    out.pdf = cosine / P;
+    out.valid = true;
+    return out;
+  }
+
+  // max(0, w . n_o) / P inside the disk's solid angle, 0 elsewhere.
+  double pdf(const Vec3& direction) const {
+    if (!g.contains(direction)) return 0.0;
+    const double cosine = g.to_local(direction.normalized()).dot(n);
+    return cosine > 0.0 ? cosine / P : 0.0;
+  }
+
+  // Local direction -> u (no root finding).
+  Point2 invert_local(const Vec3& l) const {
+    if (g.empty) return {};
+    double s = std::atan2(g.a * l.y(), g.b * l.x());
+    if (s < 0.0) s += math::kTwoPi;
+    const Meridian md = meridian(s, clipped ? pieces.kind[piece_of(s)] : 1);
+    const double u1 = std::clamp(twice_c(s) / (2.0 * P), 0.0, 1.0);
+    const double t = std::atan2(std::hypot(l.x(), l.y()), l.z());
+    const double f_lo = F(md, md.t_lo), f_hi = F(md, md.t_hi);
+    const double u2 =
+        f_hi > f_lo ? std::clamp((F(md, std::clamp(t, md.t_lo, md.t_hi)) - f_lo) / (f_hi - f_lo),
+                                 0.0, 1.0)
+                    : 0.0;
+    return {u1, u2};
+  }
+  std::optional<Point2> invert(const Vec3& direction) const {
+    if (pdf(direction) <= 0.0) return std::nullopt;
+    return invert_local(g.to_local(direction.normalized()));
+  }
+
+ private:
+  void make_unclipped() {
+    clipped = false;
+    P = math::kPi * g.a * g.b * n.z();
+    const double a2 = g.a * g.a, b2 = g.b * g.b;
+    // G(r(s)) as a Chebyshev series in x = cos 2s, r^2 = p + q x; its branch point r^2 = 1 is at
+    // x* = 1 + 2 cos^2(alpha) / (a^2 - b^2).
+    const double log_rho =
+        g.a2_minus_b2 > 0.0 ? RadialSeries::acosh1p(2.0 * g.one_minus_a2 / g.a2_minus_b2) : HUGE_VAL;
+    const double g0 = projected_detail::G(a2);
+    const RadialSeries fit = RadialSeries::fit(log_rho, g0, [&](double c2, double s2) {
+      return projected_detail::G(a2 * c2 + b2 * s2) - g0;
+    });
+    series = Series{};
+    if (fit.n > 0 && fit.n <= kSeriesCapacity) {
+      // The fit stores the integral's sine series, b[k - 1] = g_k / (2k).
+      series.n = fit.n;
+      series.g0 = fit.a0;
+      for (int k = 1; k <= fit.n; ++k)
+        series.g[k - 1] = 2.0 * k * fit.b[k - 1];
+    }
+  }
+
+  void make_clipped() {
+    clipped = true;
+    pieces = Pieces{};
+    // Horizon crossings of the rim: sign changes of w_r(s) . n on a grid, refined by bisection.
+    constexpr int kGrid = 256;
+    auto rim_dot = [&](double s) {
+      const double cs = std::cos(s), ss = std::sin(s);
+      return n.x() * g.a * cs + n.y() * g.b * ss + n.z() * g.hr_parametric(cs, ss);
+    };
+    double edges[kMaxPieces + 1];
+    int count = 0;
+    edges[count++] = 0.0;
+    double s0 = 0.0, f0 = rim_dot(0.0);
+    for (int j = 1; j <= kGrid && count < kMaxPieces; ++j) {
+      const double s1 = math::kTwoPi * j / kGrid, f1 = rim_dot(s1);
+      if ((f0 > 0.0) != (f1 > 0.0)) {
+        double lo = s0, hi = s1;
+        const bool rising = f1 > 0.0;
+        for (int it = 0; it < 80 && lo < hi; ++it) {
+          const double mid = 0.5 * (lo + hi);
+          if (mid <= lo || mid >= hi) break;
+          ((rim_dot(mid) > 0.0) == rising ? hi : lo) = mid;
+        }
+        const double root = 0.5 * (lo + hi);
+        if (root > edges[count - 1] && root < math::kTwoPi) edges[count++] = root;
+      }
+      s0 = s1;
+      f0 = f1;
+    }
+    edges[count] = math::kTwoPi;
+    pieces.count = count;
+    double cum = 0.0;
+    for (int i = 0; i < count; ++i) {
+      pieces.edge[i] = edges[i];
+      pieces.cum[i] = cum;
+      pieces.kind[i] = meridian(0.5 * (edges[i] + edges[i + 1])).kind;
+      cum += piece_part(i, edges[i], edges[i + 1], meridian(edges[i + 1], pieces.kind[i]));
+    }
+    pieces.edge[count] = math::kTwoPi;
+    pieces.cum[count] = cum;
+    P = 0.5 * cum;
+  }
+};
+
+}  // namespace disklab::ellipse
