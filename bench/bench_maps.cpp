@@ -1,5 +1,6 @@
 // Per-sample cost of the spherical-ellipse maps (issue 5, "the Newton-Raphson vs tabulated
-// question"): area, gamito, parallel, radial, ld-radial, radial4, tabulated and radial-fast, over
+// question"): area, gamito, parallel, radial, ld-radial, radial4, tabulated, radial-fast and
+// projected (receiver normal +z, the configurations' disks all above its horizon), over
 // a fixed set of configurations (near, mid, far, grazing), all in one run.
 //
 // Ratios, not absolute times. Every timed benchmark interleaves, batch by batch, the map under
@@ -45,6 +46,7 @@
 #include "disklab/ellipse/gamito.h"
 #include "disklab/ellipse/ld_radial.h"
 #include "disklab/ellipse/parallel.h"
+#include "disklab/ellipse/projected.h"
 #include "disklab/ellipse/radial.h"
 #include "disklab/ellipse/radial4.h"
 #include "disklab/ellipse/radial_fast.h"
@@ -117,6 +119,13 @@ struct Plain {  // maps with sample(Point2) -> EllipseSample
       sink += s.direction.x() + s.pdf;
     }
     return n;
+  }
+};
+
+struct ProjectedAdapter : Plain<ell::ProjectedMap> {
+  static ell::ProjectedMap make(const Config& c) {
+    return ell::ProjectedMap::make(ell::Disk{c.center, c.normal, c.radius, false}, c.o,
+                                   Vec3::UnitZ());
   }
 };
 
@@ -416,6 +425,27 @@ void print_summary(const disklab::bench::Results& values) {
   check_target(values, "radial", kTargetRadial);
   check_target(values, "radial-fast", kTargetRadialFast);
   check_target(values, "tabulated", kTargetTabulated);
+  // projected against the exact radial map (both as ratios to area in this run).
+  for (const char* kind : {"sample", "amortized"}) {
+    double worst = -1.0;
+    std::string where;
+    for (const auto& [name, v] : values) {
+      const std::string prefix = std::string(kind) + "/projected/";
+      if (name.rfind(prefix, 0) != 0) continue;
+      const std::string radial = std::string(kind) + "/radial/" + name.substr(prefix.size());
+      const auto it = values.find(radial);
+      if (it == values.end()) continue;
+      const double ratio = disklab::bench::counter(v, "ratio_to_area") /
+                           disklab::bench::counter(it->second, "ratio_to_area");
+      if (ratio > worst) {
+        worst = ratio;
+        where = name;
+      }
+    }
+    if (worst >= 0)
+      std::printf("  projected / radial (%s): worst %.2fx (%s), target <= 3x: %s\n", kind, worst,
+                  where.c_str(), worst <= 3.0 ? "met" : "MISSED");
+  }
   std::printf(
       "Anchor (issue 5): the authors' Newton sample costs ~40-220x a polar disk sample;\n"
       "compare the 'x polar' column of sample/radial, sample/parallel.\n");
@@ -435,5 +465,6 @@ int main(int argc, char** argv) {
   register_map<Radial4Adapter>("radial4");
   register_map<Plain<ell::TabulatedMap>>("tabulated");
   register_map<Plain<ell::RadialFastMap>>("radial-fast");
+  register_map<ProjectedAdapter>("projected");
   return disklab::bench::run_benchmarks(argc, argv, print_summary);
 }

@@ -37,8 +37,8 @@ constexpr double kOutsidePush = 1e-6;
 constexpr double kSeamAbs = 16 * std::numeric_limits<double>::epsilon();
 
 const std::vector<std::string> kExpectedNames = {"area",      "gamito",      "parallel",
-                                                  "radial",    "ld-radial",   "radial4",
-                                                  "tabulated", "radial-fast", "projected"};
+                                                 "radial",    "ld-radial",   "radial4",
+                                                 "tabulated", "radial-fast", "projected"};
 
 bool same(const ellipse::EllipseSample& a, const ellipse::EllipseSample& b) {
   auto eq = [](double x, double y) { return x == y || (std::isnan(x) && std::isnan(y)); };

@@ -177,7 +177,9 @@ TEST_P(MapUnbiased, MeanOverRandomizationsMatchesTheReference) {
     std::printf("  %s, %s: mean %.6f +- %.6f, reference %.6f\n",
                 std::string(ellipse::map_name(GetParam())).c_str(), what.c_str(), m.mean,
                 m.std_error, ref);
-    EXPECT_LE(std::fabs(m.mean - ref), z * m.std_error)
+    // Plus 1e-12 of the reference for rounding: projected is zero-variance at lit points, so
+    // its standard error (~1e-16) falls below the references' and P's accuracy (~1e-14).
+    EXPECT_LE(std::fabs(m.mean - ref), z * m.std_error + 1e-12 * ref)
         << ellipse::map_name(GetParam()) << " at " << what;
   }
 }

@@ -33,9 +33,9 @@ static_assert(kAlternative<MapKind::area, AreaSampler> &&
 }  // namespace
 
 const std::vector<std::string>& map_names() {
-  static const std::vector<std::string> names = {
-      "area",    "gamito",    "parallel",    "radial",   "ld-radial",
-      "radial4", "tabulated", "radial-fast", "projected"};
+  static const std::vector<std::string> names = {"area",      "gamito",      "parallel",
+                                                 "radial",    "ld-radial",   "radial4",
+                                                 "tabulated", "radial-fast", "projected"};
   return names;
 }
 

@@ -83,13 +83,13 @@ inline double G(double r2) {
 struct ProjectedMap {
   // One meridian: its azimuth's cosine and sine, A and B, and the part above the horizon.
   struct Meridian {
-    double cs = 1.0, ss = 0.0;      // cos s, sin s
-    double r2 = 0.0, r = 0.0;       // planar radius of the rim point
+    double cs = 1.0, ss = 0.0;  // cos s, sin s
+    double r2 = 0.0, r = 0.0;   // planar radius of the rim point
     double cos_phi = 1.0, sin_phi = 0.0;
     double A = 0.0, B = 0.0;
     double t_r = 0.0;               // rim angle from z_e
     double t_lo = 0.0, t_hi = 0.0;  // the part above the horizon (t_lo == t_hi: none)
-    int kind = 0;                   // 0 empty, 1 rim over apex, 2 horizon over apex, 3 rim over horizon
+    int kind = 0;  // 0 empty, 1 rim over apex, 2 horizon over apex, 3 rim over horizon
   };
 
   // A great circle meets the rim at most 4 times: at most 5 pieces of the turn.
@@ -98,8 +98,9 @@ struct ProjectedMap {
   struct Pieces {
     int count = 0;
     int kind[kMaxPieces] = {};
-    double edge[kMaxPieces + 1] = {};  // s at the ends, edge[0] = 0, edge[count] = 2 pi
-    double cum[kMaxPieces + 1] = {};   // 2 C(edge[i])
+    // s at the ends, edge[count] = edge[0] + 2 pi (unwrapped: the turn may start at a crossing)
+    double edge[kMaxPieces + 1] = {};
+    double cum[kMaxPieces + 1] = {};  // 2 C(edge[i])
   };
   // Unclipped: G(r(s)) = sum_m g_m cos 2ms, g_0 = g0, g_m = g[m - 1] (n == 0: elementary form).
   // 12 terms hold every ellipse up to a ~ 0.3 (sizes the sampler under any_map.h's 512 bytes);
@@ -208,8 +209,8 @@ struct ProjectedMap {
     if (md.kind == 0) return 0.0;
     const double ab = g.a * g.b;
     if (!clipped)
-      return ab * (n.z() + 2.0 * (n.x() * g.a * md.cs + n.y() * g.b * md.ss) *
-                               projected_detail::G(md.r2));
+      return ab * (n.z() +
+                   2.0 * (n.x() * g.a * md.cs + n.y() * g.b * md.ss) * projected_detail::G(md.r2));
     return 2.0 * (F(md, md.t_hi) - F(md, md.t_lo)) * ab / md.r2;
   }
 
@@ -237,7 +238,7 @@ struct ProjectedMap {
     return -n.x() * g.b * ca * ca * ic - n.y() * g.a * cb * cb * is + n.z() * g.a * g.b * s;
   }
 
-  // 2 C(s), s in [0, 2 pi].
+  // 2 C(s), s in [0, 2 pi] (clipped: [edge[0], edge[0] + 2 pi]).
   double twice_c(double s) const {
     if (!clipped) return twice_c_unclipped(s, meridian(s, 1));
     const int i = piece_of(s);
@@ -260,8 +261,7 @@ struct ProjectedMap {
     if (kind == 0) return 0.0;
     const Meridian ma = meridian(s_a, kind);
     double v = (ma.t_hi - ma.t_lo) * ma.B - (md.t_hi - md.t_lo) * md.B;
-    if (kind == 1 || kind == 3)
-      v += rim_term(s, md.cs, md.ss) - rim_term(s_a, ma.cs, ma.ss);
+    if (kind == 1 || kind == 3) v += rim_term(s, md.cs, md.ss) - rim_term(s_a, ma.cs, ma.ss);
     if (kind == 2 || kind == 3) v += horizon_arc(kind, ma, md);
     return v;
   }
@@ -342,10 +342,9 @@ struct ProjectedMap {
       const double st = std::sin(t), ct = std::cos(t);
       return std::pair<double, double>(F(md, t) - target, st * (md.A * st + n.z() * ct));
     };
-    const math::RootResult root =
-        math::safeguarded_newton(eval, md.t_lo, md.t_hi, start,
-                                 kProjectedNewtonTol * std::abs(f_hi - f_lo), 1e-17,
-                                 kRadialMaxEvaluations);
+    const math::RootResult root = math::safeguarded_newton(
+        eval, md.t_lo, md.t_hi, start, kProjectedNewtonTol * std::abs(f_hi - f_lo), 1e-17,
+        kRadialMaxEvaluations);
     if (iterations) *iterations += root.iterations;
     return root.x;
   }
@@ -383,14 +382,15 @@ struct ProjectedMap {
     if (g.empty) return {};
     double s = std::atan2(g.a * l.y(), g.b * l.x());
     if (s < 0.0) s += math::kTwoPi;
+    if (clipped && s < pieces.edge[0]) s += math::kTwoPi;  // the turn starts at edge[0]
     const Meridian md = meridian(s, clipped ? pieces.kind[piece_of(s)] : 1);
     const double u1 = std::clamp(twice_c(s) / (2.0 * P), 0.0, 1.0);
     const double t = std::atan2(std::hypot(l.x(), l.y()), l.z());
     const double f_lo = F(md, md.t_lo), f_hi = F(md, md.t_hi);
     const double u2 =
-        f_hi > f_lo ? std::clamp((F(md, std::clamp(t, md.t_lo, md.t_hi)) - f_lo) / (f_hi - f_lo),
-                                 0.0, 1.0)
-                    : 0.0;
+        f_hi > f_lo
+            ? std::clamp((F(md, std::clamp(t, md.t_lo, md.t_hi)) - f_lo) / (f_hi - f_lo), 0.0, 1.0)
+            : 0.0;
     return {u1, u2};
   }
   std::optional<Point2> invert(const Vec3& direction) const {
@@ -405,8 +405,9 @@ struct ProjectedMap {
     const double a2 = g.a * g.a, b2 = g.b * g.b;
     // G(r(s)) as a Chebyshev series in x = cos 2s, r^2 = p + q x; its branch point r^2 = 1 is at
     // x* = 1 + 2 cos^2(alpha) / (a^2 - b^2).
-    const double log_rho =
-        g.a2_minus_b2 > 0.0 ? RadialSeries::acosh1p(2.0 * g.one_minus_a2 / g.a2_minus_b2) : HUGE_VAL;
+    const double log_rho = g.a2_minus_b2 > 0.0
+                               ? RadialSeries::acosh1p(2.0 * g.one_minus_a2 / g.a2_minus_b2)
+                               : HUGE_VAL;
     const double g0 = projected_detail::G(a2);
     const RadialSeries fit = RadialSeries::fit(log_rho, g0, [&](double c2, double s2) {
       return projected_detail::G(a2 * c2 + b2 * s2) - g0;
@@ -451,6 +452,32 @@ struct ProjectedMap {
       f0 = f1;
     }
     edges[count] = math::kTwoPi;
+    // Where z_e is below the horizon, the meridians through the visible part span an interval
+    // of azimuths; the turn then starts at the crossing that begins it, so that u.x runs over
+    // the visible part without a jump (and 0 and 1 are its two pinch points).
+    double origin = 0.0;
+    for (int i = 0; i + 1 < count; ++i) {
+      const bool empty = meridian(0.5 * (edges[i] + edges[i + 1])).kind == 0;
+      const int next = (i + 1) % count;
+      const bool next_full = meridian(0.5 * (edges[next] + edges[next + 1])).kind != 0;
+      if (empty && next_full) {
+        origin = edges[i + 1];
+        break;
+      }
+    }
+    if (origin > 0.0) {
+      // Crossings in cyclic order from the origin, unwrapped past 2 pi.
+      double cyc[kMaxPieces + 1];
+      int m = 0;
+      for (int i = 1; i < count; ++i)
+        if (edges[i] >= origin) cyc[m++] = edges[i];
+      for (int i = 1; i < count; ++i)
+        if (edges[i] < origin) cyc[m++] = edges[i] + math::kTwoPi;
+      for (int i = 0; i < m; ++i)
+        edges[i] = cyc[i];
+      edges[m] = origin + math::kTwoPi;
+      count = m;
+    }
     pieces.count = count;
     double cum = 0.0;
     for (int i = 0; i < count; ++i) {
@@ -459,7 +486,7 @@ struct ProjectedMap {
       pieces.kind[i] = meridian(0.5 * (edges[i] + edges[i + 1])).kind;
       cum += piece_part(i, edges[i], edges[i + 1], meridian(edges[i + 1], pieces.kind[i]));
     }
-    pieces.edge[count] = math::kTwoPi;
+    pieces.edge[count] = edges[count];
     pieces.cum[count] = cum;
     P = 0.5 * cum;
   }
