@@ -153,7 +153,7 @@ std::string fmt(const char* f, double v) {
 }
 
 struct ImageRow {
-  std::string map, sequence;
+  std::string region, map, sequence;
   double mse = 0.0, rel_mse = 0.0, mse_se = 0.0, ns_per_sample = 0.0, ratio = 0.0, efficiency = 0.0,
          efficiency_vs_area = 0.0;
 };
@@ -163,28 +163,30 @@ std::vector<ImageRow> image_rows(const VarianceResult& r) {
   const study::SeedBootstrap boot = study::make_image_bootstrap(r.config);
   std::vector<ImageRow> rows;
   const auto area = std::find(r.map_names.begin(), r.map_names.end(), "area");
-  for (std::size_t m = 0; m < r.map_names.size(); ++m)
-    for (std::size_t q = 0; q < r.config.sequences.size(); ++q) {
-      const std::size_t curve = t.curve_index(0, m, q);
-      ImageRow row;
-      row.map = r.map_names[m];
-      row.sequence = r.config.sequences[q];
-      row.mse = std::pow(t.rmse(curve, 0), 2);
-      row.rel_mse = std::pow(t.rel_rmse(curve, 0), 2);
-      row.mse_se = boot.standard_error([&](std::span<const uint32_t> w) {
-                         return std::optional<double>(std::pow(t.rmse(curve, 0, w), 2));
-                       })
-                       .value_or(0.0);
-      row.ns_per_sample = r.cost[m].ns_per_sample;
-      row.ratio = r.cost[m].ratio_to_area;
-      // 1 / (MSE x time per pixel), time in seconds: who wins at equal time.
-      row.efficiency = 1.0 / (row.mse * row.ns_per_sample * r.config.spp * 1e-9);
-      rows.push_back(row);
-    }
+  for (std::size_t reg = 0; reg < t.axes.regions.size(); ++reg)
+    for (std::size_t m = 0; m < r.map_names.size(); ++m)
+      for (std::size_t q = 0; q < r.config.sequences.size(); ++q) {
+        const std::size_t curve = t.curve_index(reg, m, q);
+        ImageRow row;
+        row.region = t.axes.regions[reg];
+        row.map = r.map_names[m];
+        row.sequence = r.config.sequences[q];
+        row.mse = std::pow(t.rmse(curve, 0), 2);
+        row.rel_mse = std::pow(t.rel_rmse(curve, 0), 2);
+        row.mse_se = boot.standard_error([&](std::span<const uint32_t> w) {
+                           return std::optional<double>(std::pow(t.rmse(curve, 0, w), 2));
+                         })
+                         .value_or(0.0);
+        row.ns_per_sample = r.cost[m].ns_per_sample;
+        row.ratio = r.cost[m].ratio_to_area;
+        // 1 / (MSE x time per pixel), time in seconds: who wins at equal time.
+        row.efficiency = 1.0 / (row.mse * row.ns_per_sample * r.config.spp * 1e-9);
+        rows.push_back(row);
+      }
   if (area != r.map_names.end())
     for (ImageRow& row : rows)
       for (const ImageRow& a : rows)
-        if (a.map == "area" && a.sequence == row.sequence)
+        if (a.map == "area" && a.sequence == row.sequence && a.region == row.region)
           row.efficiency_vs_area = row.efficiency / a.efficiency;
   return rows;
 }
@@ -207,7 +209,7 @@ std::string headline(const VarianceResult& r, const std::vector<ImageRow>& rows)
     md += "| " + r.map_names[m] + " |";
     const ImageRow* last = nullptr;
     for (const ImageRow& row : rows)
-      if (row.map == r.map_names[m]) {
+      if (row.map == r.map_names[m] && row.region == "image") {
         md += ' ';
         md += fmt("%.3e", row.mse);
         md += " |";
@@ -250,6 +252,35 @@ std::string slope_tables(const VarianceResult& r, const std::vector<study::Curve
       }
       md += "\n";
     }
+  }
+  return md;
+}
+
+// MSE over the shadowed pixels per map and sequence, and its ratio to radial's.
+std::string shadowed_table(const VarianceResult& r, const std::vector<ImageRow>& rows) {
+  std::string md = "| map |";
+  for (const std::string& q : r.config.sequences)
+    md += " MSE " + q + " | vs radial |";
+  md += "\n| --- |";
+  for (std::size_t i = 0; i < 2 * r.config.sequences.size(); ++i)
+    md += " ---: |";
+  md += "\n";
+  auto find = [&](const std::string& map, const std::string& q) -> const ImageRow* {
+    for (const ImageRow& row : rows)
+      if (row.region == "shadowed" && row.map == map && row.sequence == q) return &row;
+    return nullptr;
+  };
+  for (const std::string& map : r.map_names) {
+    md += "| " + map + " |";
+    for (const std::string& q : r.config.sequences) {
+      const ImageRow *row = find(map, q), *radial = find("radial", q);
+      md += ' ';
+      md += row ? fmt("%.3e", row->mse) : "-";
+      md += " | ";
+      md += row && radial && radial->mse > 0.0 ? fmt("%.2f", row->mse / radial->mse) : "-";
+      md += " |";
+    }
+    md += "\n";
   }
   return md;
 }
@@ -372,11 +403,11 @@ Outputs make_outputs(const VarianceResult& r) {
       "efficiency_vs_area\n";
   j["images"] = nlohmann::json::array();
   for (const ImageRow& row : rows) {
-    o.images_csv += "image," + row.map + "," + row.sequence + "," + std::to_string(c.spp) + "," +
-                    fmt17(row.mse) + "," + fmt17(row.mse_se) + "," + fmt17(row.rel_mse) + "," +
-                    fmt17(row.ns_per_sample) + "," + fmt17(row.ratio) + "," +
+    o.images_csv += row.region + "," + row.map + "," + row.sequence + "," + std::to_string(c.spp) +
+                    "," + fmt17(row.mse) + "," + fmt17(row.mse_se) + "," + fmt17(row.rel_mse) +
+                    "," + fmt17(row.ns_per_sample) + "," + fmt17(row.ratio) + "," +
                     fmt17(row.efficiency) + "," + fmt17(row.efficiency_vs_area) + "\n";
-    j["images"].push_back({{"region", "image"},
+    j["images"].push_back({{"region", row.region},
                            {"map", row.map},
                            {"sequence", row.sequence},
                            {"spp", c.spp},
@@ -457,6 +488,9 @@ Outputs make_outputs(const VarianceResult& r) {
         " interleaved repetitions in this run; efficiency = 1 / (MSE x time per pixel).\n\n";
   md += "## Headline: image MSE at " + std::to_string(c.spp) + " spp and cost\n\n" +
         headline(r, rows);
+  md += "\n### The shadowed pixels (" + std::to_string(r.image_reference.quadrature_pixels) +
+        " pixels an occluder may shadow: the penumbra, where no map is zero-variance)\n\n" +
+        shadowed_table(r, rows);
   md += "\n## Ordering by MSE at N = " + std::to_string(c.spp) +
         " (Fig. 7: radial < parallel ~ ld-radial < Gamito << area)\n\n" + ordering_table(r);
   md += "\n## The memo's open question: radial4\n\n" + radial4_answer(claims, outcomes) + "\n";
@@ -619,9 +653,10 @@ std::function<int()> setup_variance(CLI::App& sub) {
       "                          divided by the reference\n"
       "  variance_fits.csv       region,map,sequence,slope,slope_se,fit_n_min,fit_n_max: slope of\n"
       "                          log rmse vs log N, bootstrap standard error over the seeds\n"
-      "  variance_images.csv     region(image),map,sequence,spp,mse,mse_se,rel_mse,ns_per_sample,\n"
-      "                          ratio_to_area,efficiency,efficiency_vs_area: image MSE over the\n"
-      "                          pixels and image randomizations (mse_se: bootstrap), relative\n"
+      "  variance_images.csv     region,map,sequence,spp,mse,mse_se,rel_mse,ns_per_sample,\n"
+      "                          ratio_to_area,efficiency,efficiency_vs_area: MSE over the\n"
+      "                          region's pixels (image: all; shadowed: those an occluder may\n"
+      "                          shadow) and image randomizations (mse_se: bootstrap), relative\n"
       "                          MSE (each error / reference), time per sample with the\n"
       "                          per-pixel set-up amortized, its ratio to area's, and\n"
       "                          efficiency = 1 / (MSE x seconds per pixel)\n"

@@ -172,6 +172,26 @@ S0=${SCENES[0]}
   expect_usage_error map --strategy polar --inverse --dir 0,0,1
 }
 
+# projected: needs --receiver-normal (and only it takes one); its pdf is the cosine over P.
+VERT="--center 0,0,0.6 --normal 1,0,0 --radius 0.5 --two-sided --point 0.3,0.1,0"
+# shellcheck disable=SC2086
+run map --map projected $VERT --receiver-normal 0,0,1 --uv 0.3,0.7
+[[ $RC -eq 0 ]] || fail "projected with --receiver-normal: exit $RC ($ERR)"
+read -r px py pz ppdf <<<"$OUT"
+[[ -n ${ppdf:-} ]] && awk -v z="$pz" -v p="$ppdf" 'BEGIN { exit !(z > 0 && p > 0) }' ||
+  fail "projected sample '$OUT': expected a direction above the horizon and a positive pdf"
+# shellcheck disable=SC2086
+expect_usage_error map --map projected $VERT --uv 0.3,0.7
+# shellcheck disable=SC2086
+expect_usage_error map --map radial $VERT --receiver-normal 0,0,1 --uv 0.3,0.7
+# shellcheck disable=SC2086
+expect_usage_error map --map projected $VERT --receiver-normal 0,0,0 --uv 0.3,0.7
+# The receiver facing away: nothing above its horizon.
+# shellcheck disable=SC2086
+expect_usage_error map --map projected --center 0,0,2 --normal 0,0,-1 --radius 1 --point 0,0,0 \
+  --receiver-normal 0,0,-1 --uv 0.3,0.7
+: "$px" "$py"
+
 run map --help
 grep -q "disklab map --map radial" "$TMP/out" || fail "map --help lacks a --map example"
 

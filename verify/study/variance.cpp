@@ -124,6 +124,7 @@ ImageReference compute_image_reference(const Scene& scene, const ImageGrid& grid
   });
   for (uint8_t q : quad)
     ref.quadrature_pixels += q;
+  ref.shadowed = std::move(quad);
   return ref;
 }
 
@@ -193,9 +194,12 @@ void run_curves(const VarianceConfig& c, VarianceResult& r, const std::function<
 void run_images(const VarianceConfig& c, VarianceResult& r, const std::function<void()>& tick) {
   const int size = c.image.size;
   const std::size_t nm = c.maps.size(), nq = c.sequences.size(), curves = nm * nq;
+  const bool has_shadow = r.image.axes.regions.size() > 1;
   const auto jobs = static_cast<int64_t>(c.image_randomizations) * size;
   // Per-job sums, added in job order afterwards so the totals do not depend on the threads.
-  std::vector<double> job_sse(static_cast<std::size_t>(jobs) * curves, 0.0);
+  // Slots [job][region][map][sequence], region 1 the shadowed pixels.
+  const std::size_t per_job = 2 * curves;
+  std::vector<double> job_sse(static_cast<std::size_t>(jobs) * per_job, 0.0);
   std::vector<double> job_rel(job_sse.size(), 0.0);
   std::mutex newton_mutex;
   const std::vector<uint32_t> ns{c.spp};
@@ -218,10 +222,14 @@ void run_images(const VarianceConfig& c, VarianceResult& r, const std::function<
         for (std::size_t m = 0; m < nm; ++m) {
           const ellipse::AnyMap map = light_map(c.maps[m], c.scene, sp);
           progressive_irradiance(c.scene, sp, map, u, ns, {&est, 1}, newton[m]);
-          const double e = est - ref;
-          const std::size_t slot = static_cast<std::size_t>(job) * curves + m * nq + q;
+          const double e = est - ref, rel = ref != 0.0 ? (e / ref) * (e / ref) : 0.0;
+          const std::size_t slot = static_cast<std::size_t>(job) * per_job + m * nq + q;
           job_sse[slot] += e * e;
-          job_rel[slot] += ref != 0.0 ? (e / ref) * (e / ref) : 0.0;
+          job_rel[slot] += rel;
+          if (r.image_reference.shadowed[pixel]) {
+            job_sse[slot + curves] += e * e;
+            job_rel[slot + curves] += rel;
+          }
           if (rand == 0) r.images[m * nq + q][pixel] = est;
         }
       }
@@ -230,13 +238,15 @@ void run_images(const VarianceConfig& c, VarianceResult& r, const std::function<
   });
   for (int64_t job = 0; job < jobs; ++job) {
     const auto rand = static_cast<std::size_t>(job / size);
-    for (std::size_t m = 0; m < nm; ++m)
-      for (std::size_t q = 0; q < nq; ++q) {
-        const std::size_t slot = static_cast<std::size_t>(job) * curves + m * nq + q;
-        const std::size_t curve = r.image.curve_index(0, m, q);
-        r.image.sse_at(curve, 0, rand) += job_sse[slot];
-        r.image.rel_sse_at(curve, 0, rand) += job_rel[slot];
-      }
+    for (std::size_t reg = 0; reg < (has_shadow ? 2u : 1u); ++reg)
+      for (std::size_t m = 0; m < nm; ++m)
+        for (std::size_t q = 0; q < nq; ++q) {
+          const std::size_t slot =
+              static_cast<std::size_t>(job) * per_job + reg * curves + m * nq + q;
+          const std::size_t curve = r.image.curve_index(reg, m, q);
+          r.image.sse_at(curve, 0, rand) += job_sse[slot];
+          r.image.rel_sse_at(curve, 0, rand) += job_rel[slot];
+        }
   }
   for (std::size_t m = 0; m < nm; ++m) {
     NewtonStats& s = r.newton[m];
@@ -365,6 +375,10 @@ VarianceResult run_variance(VarianceConfig config) {
   CurveAxes& ia = r.image.axes;
   ia.regions = {"image"};
   ia.points = {static_cast<std::size_t>(c.image.size) * c.image.size};
+  if (r.image_reference.quadrature_pixels > 0) {
+    ia.regions.push_back("shadowed");
+    ia.points.push_back(r.image_reference.quadrature_pixels);
+  }
   ia.methods = r.map_names;
   ia.sequences = c.sequences;
   ia.ns = {c.spp};

@@ -43,7 +43,8 @@ ReferenceValue irradiance_reference(const Scene& scene, const ShadingPoint& sp, 
 struct ImageReference {
   ImageGrid grid;
   std::vector<double> value, error;  // row-major, grid.size^2
-  uint64_t quadrature_pixels = 0;    // how many needed the quadrature
+  std::vector<uint8_t> shadowed;     // may_be_shadowed: these pixels use the quadrature
+  uint64_t quadrature_pixels = 0;    // how many
 };
 
 struct VarianceConfig {
@@ -90,7 +91,9 @@ struct VarianceResult {
   std::vector<std::string> map_names;  // the methods of both tables, in config.maps' order
   std::vector<RegionReferences> references;
   CurveTable curves;  // regions x maps x sequences, N = config.ns
-  CurveTable image;   // region "image", N = spp, seeds = image randomizations
+  // Regions "image" (every pixel) and "shadowed" (the pixels an occluder may shadow, where
+  // even projected has variance), N = spp, seeds = image randomizations.
+  CurveTable image;
   ImageReference image_reference;
   // The first image randomization's estimate per pixel: [map][sequence] row-major.
   std::vector<std::vector<double>> images;
