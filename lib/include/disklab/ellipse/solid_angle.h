@@ -125,6 +125,10 @@ inline double one_minus_h_r(const SphericalEllipse& se, double phi) {
 
 namespace detail {
 
+// The low part of pi/2: kHalfPi + kHalfPiLo = pi/2 to ~1e-33, for complements pi/2 - t that
+// must keep their relative accuracy near pi/2.
+inline constexpr double kHalfPiLo = 6.123233995736766036e-17;
+
 // Gauss-Legendre, 20 points on [-1, 1]: the positive nodes and their weights (computed at 40
 // digits; the rule is symmetric).
 inline constexpr double kGL20x[10] = {0.993128599185094924786, 0.963971927277913791268,
@@ -138,28 +142,80 @@ inline constexpr double kGL20w[10] = {0.0176140071391521183119, 0.04060142980038
                                       0.131688638449176626898,  0.142096109318382051329,
                                       0.149172986472603746788,  0.152753387130725850698};
 
+// w^2 = 1 + a_t^2 cos^2 t + b_t^2 sin^2 t from t (when t <= pi/4) or from its complement
+// pi/2 - t (above): positive terms, cos t near pi/2 formed as sin(pi/2 - t) with full relative
+// accuracy. (With cos 2t, w^2 = mean + amp cos 2t cancels to an absolute error ~eps a_t^2, of the
+// order of w^2 itself where the point is near the plane of the disk's rim and a_t ~ sqrt(r/h).)
+inline double radial_w2(double at2, double bt2, double t, double comp) {
+  const bool low = t <= 0.25 * math::kPi;
+  const double c = low ? std::cos(t) : std::sin(comp), s = low ? std::sin(t) : std::cos(comp);
+  return 1.0 + at2 * c * c + bt2 * s * s;
+}
+
 // a_t b_t int_{t0}^{t1} dt / (w (1 + w)), w^2 = 1 + a_t^2 cos^2 t + b_t^2 sin^2 t, by GL20.
-// w^2 is written with cos(2t) so each node costs one cosine.
-inline double radial_gauss(const SphericalEllipse& se, double t0, double t1) {
+// Where a_t^2 - b_t^2 <= 2 (every point but those near the disk), w^2 is written with cos(2t), one
+// cosine per node, its absolute error ~eps (a_t^2 - b_t^2) below eps w^2. Elsewhere the integrand
+// varies on a scale ~1/a_t next to pi/2, so the nodes are placed by their complements pi/2 - t
+// (an absolute error eps pi in a node near pi/2 would move it by eps a_t of that scale) and w^2
+// comes from radial_w2.
+// c0, c1 are the complements pi/2 - t0, pi/2 - t1 to full relative accuracy (the interval's
+// width is taken from them: near pi/2 they carry the digits t0 and t1 cannot).
+inline double radial_gauss(const SphericalEllipse& se, double t0, double t1, double c0, double c1) {
   const double at2 = se.a_t * se.a_t, bt2 = se.b_t * se.b_t;
   const double mean = 1.0 + 0.5 * (at2 + bt2), amp = 0.5 * (at2 - bt2);
-  const double mid = t0 + t1, half = t1 - t0;  // in the doubled angle 2t
+  const bool doubled = amp <= 1.0;
+  const double mid = t0 + t1;  // in the doubled angle 2t
+  const double half = t0 <= 0.25 * math::kPi ? t1 - t0 : c0 - c1;
+  const double cmid = 0.5 * (c0 + c1);
   double sum = 0.0;
   for (int i = 0; i < 10; ++i) {
     const double d = half * kGL20x[i];
-    const double w2m = mean + amp * std::cos(mid - d);
-    const double w2p = mean + amp * std::cos(mid + d);
+    double w2m, w2p;
+    if (doubled) {
+      w2m = mean + amp * std::cos(mid - d);
+      w2p = mean + amp * std::cos(mid + d);
+    } else {
+      w2m = radial_w2(at2, bt2, 0.5 * (mid - d), cmid + 0.5 * d);
+      w2p = radial_w2(at2, bt2, 0.5 * (mid + d), cmid - 0.5 * d);
+    }
     const double wm = std::sqrt(w2m), wp = std::sqrt(w2p);
     sum += kGL20w[i] * (1.0 / (wm * (1.0 + wm)) + 1.0 / (wp * (1.0 + wp)));
   }
-  return se.a_t * se.b_t * (0.5 * (t1 - t0)) * sum;
+  return se.a_t * se.b_t * (0.5 * half) * sum;
 }
 
-// Eq. (19) at parametric angle vphi (n, m with their complements, so Pi keeps accuracy near the
-// disk where n -> 1).
-inline double radial_eq19(const SphericalEllipse& se, double vphi) {
-  const double pi = math::ellint_pi(se.n_r, se.one_minus_n_r, vphi, se.m, se.one_minus_m);
-  return radial_azimuth(se, vphi) - se.radial_coefficient * pi;
+// pi/2 - t for a double t in [0, pi/2], to full relative accuracy (kHalfPi - t is exact there
+// for t >= pi/4, Sterbenz; the low part of pi/2 carries the rest).
+inline double half_pi_complement(double t) {
+  return (math::kHalfPi - t) + kHalfPiLo;
+}
+// The split's complement, from the same a_t^2, b_t^2 as geometry.cpp's split.
+inline double radial_split_complement(const SphericalEllipse& se) {
+  if (se.radial_split >= math::kHalfPi) return 0.0;
+  if (!(se.radial_split > 0.0)) return math::kHalfPi;
+  constexpr double kSplit = 3.0;
+  const double at2 = se.a_t * se.a_t, bt2 = se.b_t * se.b_t;
+  return std::atan2(std::sqrt(kSplit - bt2), std::sqrt(at2 - kSplit));
+}
+
+// Eq. (19) at parametric angle vphi with complement cvphi = pi/2 - vphi (n, m with their
+// complements, so Pi keeps accuracy near the disk where n -> 1). phi - C Pi subtracts two terms
+// whose derivatives in vphi are ~a_t/b_t times the difference's, so both must see the same angle:
+// near pi/2 (cvphi < pi/4) sin and cos come from the complement and Pi from them (the portable
+// path takes s, c), and phi = atan2(b_t s, a_t c) from the same pair. Elsewhere the double vphi is
+// as accurate as its complement, and Pi takes it.
+inline double radial_eq19(const SphericalEllipse& se, double vphi, double cvphi) {
+  if (cvphi >= 0.25 * math::kPi) {
+    const double pi = math::ellint_pi(se.n_r, se.one_minus_n_r, vphi, se.m, se.one_minus_m);
+    return std::atan2(se.b_t * std::sin(vphi), se.a_t * std::cos(vphi)) -
+           se.radial_coefficient * pi;
+  }
+  const long double s = std::cos(static_cast<long double>(cvphi));
+  const long double c = std::sin(static_cast<long double>(cvphi));
+  const double pi = static_cast<double>(math::detail::ellint_pi_portable_sc<double>(
+      se.n_r, se.one_minus_n_r, s, c, se.m, se.one_minus_m));
+  return std::atan2(se.b_t * static_cast<double>(s), se.a_t * static_cast<double>(c)) -
+         se.radial_coefficient * pi;
 }
 
 }  // namespace detail
@@ -167,12 +223,24 @@ inline double radial_eq19(const SphericalEllipse& se, double vphi) {
 // Omega_r as a function of the parametric angle vphi in [0, pi/2] (eq. 16 in the variable of
 // eq. 20), cancellation-free (see the header comment). Monotone increasing; derivative
 // (1 - h_r) dphi/dvphi.
-inline double radial_sector_parametric(const SphericalEllipse& se, double vphi) {
+// The form with the complement cvphi = pi/2 - vphi given to full relative accuracy (from the
+// angle's own construction, e.g. an atan2 with the arguments swapped): near the disk's rim plane
+// Omega_r varies on a scale ~1/a_t next to vphi = pi/2, where the double vphi cannot resolve it.
+inline double radial_sector_parametric(const SphericalEllipse& se, double vphi, double cvphi) {
   if (se.empty || !(vphi > 0.0)) return 0.0;
-  if (vphi > math::kHalfPi) vphi = math::kHalfPi;
-  if (vphi <= se.radial_split) return detail::radial_eq19(se, vphi);
-  const double head = se.radial_split > 0.0 ? detail::radial_eq19(se, se.radial_split) : 0.0;
-  return head + detail::radial_gauss(se, se.radial_split, vphi);
+  if (!(cvphi > 0.0)) {
+    vphi = math::kHalfPi;
+    cvphi = 0.0;
+  }
+  if (vphi <= se.radial_split) return detail::radial_eq19(se, vphi, cvphi);
+  const double csplit = detail::radial_split_complement(se);
+  const double head =
+      se.radial_split > 0.0 ? detail::radial_eq19(se, se.radial_split, csplit) : 0.0;
+  return head + detail::radial_gauss(se, se.radial_split, vphi, csplit, cvphi);
+}
+inline double radial_sector_parametric(const SphericalEllipse& se, double vphi) {
+  if (!(vphi < math::kHalfPi)) return radial_sector_parametric(se, math::kHalfPi, 0.0);
+  return radial_sector_parametric(se, vphi, detail::half_pi_complement(vphi));
 }
 
 // Omega_r(phi), phi in [0, pi/2] (eqs. 16/19): the solid angle of the first-quadrant sector of
@@ -181,7 +249,9 @@ inline double radial_sector_parametric(const SphericalEllipse& se, double vphi) 
 inline double radial_sector(const SphericalEllipse& se, double phi) {
   if (se.empty || !(phi > 0.0)) return 0.0;
   if (phi >= math::kHalfPi) return se.quadrant;
-  return radial_sector_parametric(se, radial_parametric_angle(se, phi));
+  const double sp = std::sin(phi), cp = std::cos(phi);
+  return radial_sector_parametric(se, std::atan2(se.a_t * sp, se.b_t * cp),
+                                  std::atan2(se.b_t * cp, se.a_t * sp));
 }
 
 // Eq. (19) exactly as printed: phi - C Pi(n; vphi|m). Cancels for small ellipses.
