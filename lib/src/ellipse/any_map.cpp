@@ -157,7 +157,7 @@ std::optional<Point2> AnyMap::invert(const Vec3& direction) const {
   // projected's image is the part of the disk above the receiver's horizon.
   if (const auto* p = std::get_if<ProjectedMap>(&map_)) return p->invert(direction);
   if (!has_inverse() || !contains(direction)) return std::nullopt;
-  const Vec3 d = direction.normalized();
+  const Vec3 d = unit_vector(direction);
   const MapGeometry& g = geometry();
   const Vec3 l = g.to_local(d);
   const Point2 u = std::visit(Overloaded{
@@ -176,7 +176,7 @@ std::optional<Point2> AnyMap::invert_copy(const Vec3& direction, int* copy) cons
   if (m == nullptr) return invert(direction);
   if (!contains(direction)) return std::nullopt;
   int k = 0;
-  const Point2 u = m->invert_copy_local(geometry().to_local(direction.normalized()), k);
+  const Point2 u = m->invert_copy_local(geometry().to_local(unit_vector(direction)), k);
   if (!std::isfinite(u.x) || !std::isfinite(u.y)) return std::nullopt;
   if (copy) *copy = k;
   return u;

@@ -41,6 +41,10 @@ struct LdRadialMap {
   }
 
   EllipseSample sample(Point2 u, int* iterations = nullptr) const {
+    if (!in_unit_square(u)) {
+      if (iterations) *iterations = 0;
+      return {};
+    }
     return radial.sample(to_radial(u), iterations);
   }
   Point2 invert_local(const Vec3& l) const { return from_radial(radial.invert_local(l)); }

@@ -15,6 +15,7 @@
 #include <Eigen/Geometry>
 
 #include "disklab/ellipse/geometry.h"
+#include "disklab/ellipse/sampler.h"
 #include "disklab/ellipse/solid_angle.h"
 #include "disklab/math/constants.h"
 #include "disklab/types.h"
@@ -23,9 +24,12 @@ namespace disklab::ellipse {
 
 // A direction within this relative slack of the rim counts as inside (contains()): directions
 // read back from %.17g text, or produced on the rim (eps2 = 1), lie within a few ulps of it.
-// The local-frame coordinates of a unit world direction carry an absolute error ~eps, i.e. a
-// relative error ~eps / b_t in the thin direction, which contains() adds to this slack.
 inline constexpr double kRimSlack = 1e-9;
+// The local-frame coordinates of a unit world direction carry an absolute error of a few eps (the
+// rotation to and from R_e): contains() also accepts what lies within kDirectionAbsError of the
+// ellipse to first order. This is the resolution of any unit direction: a disk seen edge-on
+// (from within ~eps d of its plane) cannot be hit better than that.
+inline constexpr double kDirectionAbsError = 16 * std::numeric_limits<double>::epsilon();
 
 // The shape, frame and solid angle once (the SphericalEllipse base), plus the few derived numbers
 // the root solves read on every sample.
@@ -41,7 +45,9 @@ struct MapGeometry : SphericalEllipse {
     MapGeometry g;
     static_cast<SphericalEllipse&>(g) = spherical_ellipse(disk, o);
     if (g.empty) return g;
-    if (!(g.b > 0.0) || !(g.omega > 0.0) || !(g.quadrant > 0.0)) {
+    // A solid angle below the smallest normal double (seen from ~1e150 radii away) has a density
+    // 1/Omega that overflows: no sampler can report it, so there is nothing to sample.
+    if (!(g.b > 0.0) || !(g.omega >= std::numeric_limits<double>::min()) || !(g.quadrant > 0.0)) {
       g.empty = true;
       return g;
     }
@@ -70,8 +76,9 @@ struct MapGeometry : SphericalEllipse {
 
   // Omega_r (eq. 16/19) at the planar parametric angle s in [0, pi/2].
   double radial_sector_s(double s) const {
-    const double vphi = std::atan2(cos_beta * std::sin(s), cos_alpha * std::cos(s));
-    return radial_sector_parametric(*this, vphi);
+    // vphi and its complement from the same sine and cosine (see radial_sector_parametric).
+    const double x = cos_alpha * std::cos(s), y = cos_beta * std::sin(s);
+    return radial_sector_parametric(*this, std::atan2(y, x), std::atan2(x, y));
   }
   // Omega_r(phi), phi in [0, pi/2].
   double radial_sector(double phi) const { return ellipse::radial_sector(*this, phi); }
@@ -81,18 +88,26 @@ struct MapGeometry : SphericalEllipse {
   double parallel_half(double phi_p) const { return parallel_half_sector(*this, phi_p); }
 
   // Whether the ray from o along `direction` (any length) meets the disk: inside the spherical
-  // ellipse, z_e > 0 and (x/a_t)^2 + (y/b_t)^2 <= z^2 (its gnomonic image is the tangent
-  // ellipse), with the slack kRimSlack + 16 eps / b_t.
+  // ellipse, z_e > 0 and F = (x/a_t)^2 + (y/b_t)^2 - z^2 <= 0 (its gnomonic image is the tangent
+  // ellipse), with two slacks: z^2 ((1 + kRimSlack)^2 - 1) (relative, the rim) and the most an
+  // absolute error delta = kDirectionAbsError of the unit direction can change F: F is quadratic,
+  // so |grad F| delta + delta^2 max(1, 1/a_t^2, 1/b_t^2) bounds it exactly (for distant disks
+  // ~eps / b_t relative, for points near the disk's plane ~eps / z).
   bool contains(const Vec3& direction) const {
     if (empty || !direction.allFinite()) return false;
-    const double len = direction.norm();
-    if (!(len > 0.0)) return false;
-    const Vec3 l = to_local(direction / len);
-    if (!(l.z() > 0.0)) return false;
-    const double slack =
-        1.0 + kRimSlack + 16.0 * std::numeric_limits<double>::epsilon() / std::min(b_t, a_t);
+    const Vec3 unit = unit_vector(direction);
+    if (!(unit.squaredNorm() > 0.0)) return false;
+    const Vec3 l = to_local(unit);
+    // z_e > 0 up to the same absolute error: near-hemisphere ellipses reach the horizon z = 0.
+    if (!(l.z() > -kDirectionAbsError)) return false;
     const double qx = l.x() / a_t, qy = l.y() / b_t;
-    return qx * qx + qy * qy <= l.z() * l.z() * slack * slack;
+    const double f = qx * qx + qy * qy - l.z() * l.z();
+    const double grad =
+        2.0 * std::sqrt(qx * qx / (a_t * a_t) + qy * qy / (b_t * b_t) + l.z() * l.z());
+    const double rel = (1.0 + kRimSlack) * (1.0 + kRimSlack) - 1.0;
+    const double curv = std::max(1.0, 1.0 / (b_t * b_t));  // b_t <= a_t
+    return f <= l.z() * l.z() * rel + grad * kDirectionAbsError +
+                    curv * kDirectionAbsError * kDirectionAbsError;
   }
 
   // Where the ray from o along `dir` meets the disk plane.

@@ -107,7 +107,8 @@ struct ParallelMap {
   }
 
   EllipseSample sample(Point2 u, int* iterations = nullptr) const {
-    if (g.empty) return {};
+    if (iterations) *iterations = 0;
+    if (g.empty || !in_unit_square(u)) return {};
     const double e1 = std::clamp(u.x, 0.0, 1.0), e2 = std::clamp(u.y, 0.0, 1.0);
     // Eq. (7): eps1 >= 1/2 lies in the positive half, the rest mirrored.
     const bool positive = e1 >= 0.5;
@@ -115,8 +116,18 @@ struct ParallelMap {
     const double v = solve_varphi(f, iterations);
     const double phi = parallel_azimuth(g, v);
     const double phi_p = positive ? phi : -phi;
-    const double h = (2.0 * e2 - 1.0) * h_p_parametric(g, v);  // eq. (14)
-    const double rho = std::sqrt(std::max(0.0, (1.0 - h) * (1.0 + h)));
+    const double sgn = 2.0 * e2 - 1.0;
+    const double hp = h_p_parametric(g, v);
+    const double h = sgn * hp;  // eq. (14)
+    // rho^2 = 1 - h^2 = (1 - sgn^2) + sgn^2 (1 - h_p^2), 1 - sgn^2 = 4 e2 (1 - e2), and from
+    // eq. (9), 1 - h_p^2 = (cos^2 v (1 - a^2) + (1 - m) sin^2 v) / Delta^2: positive terms only.
+    // (1 - h)(1 + h) cancels at the slice ends (h = -+h_p) when h_p -> 1, i.e. for points close
+    // to the disk: the direction then leaves the disk or runs parallel to it.
+    const double cv = std::cos(v), sv = std::sin(v);
+    const double delta2 = cv * cv + g.one_minus_m * sv * sv;
+    const double one_minus_hp2 = (cv * cv * g.one_minus_a2 + g.one_minus_m * sv * sv) / delta2;
+    const double rho2 = 4.0 * e2 * (1.0 - e2) + sgn * sgn * one_minus_hp2;
+    const double rho = std::sqrt(std::max(0.0, std::min(1.0, rho2)));
     const Vec3 local(h, rho * std::sin(phi_p), rho * std::cos(phi_p));  // eq. (15)
     return finish_sample(g, local, uniform_pdf);
   }

@@ -11,8 +11,9 @@
 namespace disklab::ellipse {
 
 // Full-ellipse eps1 -> (quadrant k, fraction t' in that quadrant, mirrored on odd quadrants).
+// (NaN, which in_unit_square keeps out of the maps, counts as 0: no NaN reaches the int cast.)
 inline int split_quadrant(double eps1, double& t_folded) {
-  const double e = std::clamp(eps1, 0.0, 1.0) * 4.0;
+  const double e = (eps1 > 0.0 ? std::min(eps1, 1.0) : 0.0) * 4.0;
   const int k = std::min(3, static_cast<int>(e));
   const double t = std::clamp(e - k, 0.0, 1.0);
   t_folded = (k & 1) ? 1.0 - t : t;

@@ -135,8 +135,12 @@ struct RadialQuadrant {
     // |(px, py)|: plain sqrt unless the squares could underflow (a < ~1e-145).
     const double r2 = px * px + py * py;
     const double r = r2 > 1e-290 ? std::sqrt(r2) : std::hypot(px, py);
-    const double omh = eps2 * g->one_minus_hr_parametric(cs, ss);  // 1 - h
-    const double h = 1.0 - omh;
+    const double omh_r = g->one_minus_hr_parametric(cs, ss);
+    const double omh = eps2 * omh_r;  // 1 - h
+    // h = 1 - eps2 (1 - h_r) as h_r + (1 - eps2)(1 - h_r), two non-negative terms: near the rim
+    // (eps2 -> 1) of a disk seen from close to its plane h_r is tiny and 1 - omh would cancel to 0,
+    // a direction parallel to the disk that never reaches it.
+    const double h = g->hr_parametric(cs, ss) + (1.0 - eps2) * omh_r;
     const double rho = std::sqrt(std::max(0.0, omh * (2.0 - omh)));  // sqrt(1 - h^2)
     return unfold_direction(k, r > 0.0 ? rho * px / r : rho, r > 0.0 ? rho * py / r : 0.0, h);
   }
@@ -159,7 +163,7 @@ struct RadialQuadrant {
 inline EllipseSample finish_sample(const MapGeometry& g, const Vec3& local, double pdf) {
   EllipseSample out;
   out.local = local;
-  out.direction = g.to_world(local).normalized();
+  out.direction = unit_vector(g.to_world(local));
   out.point = g.hit(out.direction);
   out.pdf = pdf;
   out.valid = true;
@@ -182,7 +186,8 @@ struct RadialMap {
   RadialQuadrant quadrant() const { return RadialQuadrant{&g, &series}; }
 
   EllipseSample sample(Point2 u, int* iterations = nullptr) const {
-    if (g.empty) return {};
+    if (iterations) *iterations = 0;
+    if (g.empty || !in_unit_square(u)) return {};
     double t;
     const int k = split_quadrant(u.x, t);
     const RadialQuadrant q = quadrant();

@@ -30,7 +30,8 @@ struct Radial4Map {
 
   // The first-quadrant point of u (the map [0,1]^2 -> quadrant 0, measure Omega/4).
   EllipseSample sample_quadrant(Point2 u, int* iterations = nullptr) const {
-    if (!radial.valid()) return {};
+    if (iterations) *iterations = 0;
+    if (!radial.valid() || !in_unit_square(u)) return {};
     const RadialQuadrant q = radial.quadrant();
     const RadialQuadrant::Angle s = q.solve(std::clamp(u.x, 0.0, 1.0), iterations);
     return finish_sample(radial.g, q.local_point(0, s, std::clamp(u.y, 0.0, 1.0)),

@@ -37,7 +37,8 @@ struct RadialFastMap {
   int seed_terms() const { return radial.series.n_seed; }
 
   EllipseSample sample(Point2 u, int* iterations = nullptr) const {
-    if (!radial.valid()) return {};
+    if (iterations) *iterations = 0;
+    if (!radial.valid() || !in_unit_square(u)) return {};
     double t;
     const int k = split_quadrant(u.x, t);
     const RadialQuadrant q = radial.quadrant();

@@ -8,6 +8,12 @@
 // non-finite input), or a rejection sampler used in proposal mode rejected its candidate. In
 // both cases the sample contributes zero to an estimator, which keeps every estimator unbiased.
 // Hot paths allocate nothing, throw nothing and never return NaN.
+//
+// DOMAIN. u lies in [0, 1]^2 (both ends included). Any other u, NaN included, is "no sample":
+// every map tests it first (in_unit_square), so no u reaches a table index or a root solve.
+#include <cmath>
+#include <limits>
+
 #include <Eigen/Geometry>
 
 #include "disklab/types.h"
@@ -23,5 +29,24 @@ struct EllipseSample {
   double pdf = 0.0;           // solid-angle density of `direction`
   bool valid = false;
 };
+
+// v / |v| for any finite non-zero v, however short or long: v is first divided by its largest
+// component, so |v|^2 neither underflows (Eigen's normalized() returns a vector whose squared
+// norm underflows unchanged, e.g. a direction of length 1e-300) nor overflows. Zero for v = 0.
+// Where |v|^2 is a normal double this is v / sqrt(|v|^2), bit for bit Eigen's normalized().
+inline Vec3 unit_vector(const Vec3& v) {
+  const double n2 = v.squaredNorm();
+  if (n2 >= std::numeric_limits<double>::min() && n2 < std::numeric_limits<double>::infinity())
+    return v / std::sqrt(n2);
+  const double m = v.cwiseAbs().maxCoeff();
+  if (!(m > 0.0) || !std::isfinite(m)) return Vec3::Zero();
+  const Vec3 w = v / m;
+  return w / w.norm();
+}
+
+// Whether u is in the maps' domain [0, 1]^2 (false for NaN).
+inline bool in_unit_square(Point2 u) {
+  return u.x >= 0.0 && u.x <= 1.0 && u.y >= 0.0 && u.y <= 1.0;
+}
 
 }  // namespace disklab::ellipse

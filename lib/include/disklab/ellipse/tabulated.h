@@ -76,7 +76,7 @@ struct TabulatedMap {
   double phi_at(int j) const { return row0[j] + w * (row1[j] - row0[j]); }
 
   EllipseSample sample(Point2 u) const {
-    if (g.empty) return {};
+    if (g.empty || !in_unit_square(u)) return {};
     double t;
     const int k = split_quadrant(u.x, t);
     const int n = table->n_eps;
@@ -120,7 +120,7 @@ struct TabulatedMap {
   double pdf(const Vec3& direction) const {
     if (!g.contains(direction)) return 0.0;
     if (biased) return pdf_uniform;
-    const FoldedDirection fd = fold_direction(g.to_local(direction.normalized()));
+    const FoldedDirection fd = fold_direction(g.to_local(unit_vector(direction)));
     const int j = cell_of(std::atan2(fd.y, fd.x));
     const double proposal =
         1.0 / (4.0 * table->n_eps * (phi_at(j + 1) - phi_at(j)) * g.one_minus_hr(phi_at(j)));
