@@ -38,6 +38,17 @@ double height_dot(const Vec3& p, const Vec3& q, const Vec3& n) {
   return sum + comp;
 }
 
+// The normal scaled by a power of two (exactly, component by component) so that its largest
+// component lies in [1, 2): |n|^2 then neither underflows nor overflows for any finite non-zero
+// normal (lengths from the smallest subnormal to ~1e308), and for ordinary lengths every number
+// derived from it (unit normal, height) is bit for bit the one the unscaled normal gives.
+Vec3 scaled_normal(const Vec3& n) {
+  const double m = n.cwiseAbs().maxCoeff();
+  if (!(m > 0.0) || !std::isfinite(m)) return n;
+  const int k = std::ilogb(m);
+  return {std::ldexp(n.x(), -k), std::ldexp(n.y(), -k), std::ldexp(n.z(), -k)};
+}
+
 }  // namespace
 
 EllipseShape ellipse_shape(double h, double e, double r) {
@@ -48,10 +59,13 @@ EllipseShape ellipse_shape(double h, double e, double r) {
   e /= r;
   r = 1.0;
   // Under the disk (e < r) and closer than 1e-150 radii, a_t ~ sqrt(r^2 - e^2)/h would overflow in
-  // a_t^2; Omega there equals 2 pi - O(h/r) = 2 pi in double, as it does at h = 1e-150 r.
-  // (For e >= r, a_t stays below ~sqrt(r/h) and Omega ~ h: no clamp, it keeps the true scale.)
+  // a_t^2; Omega there equals 2 pi - O(h/r) = 2 pi in double, as it does at h = 1e-150 r. Exactly
+  // above the rim (e == r) Omega = pi - O(sqrt(h/r)), pi in double at h = 1e-150 r, while below it
+  // the terms that scale like h (1 - a^2, C = a h / r) reach the subnormal range and lose the
+  // limit. (For e > r, a_t stays below ~sqrt(r/h) and Omega ~ h: no clamp, it keeps the true
+  // scale.)
   constexpr double kMinUnderDiskHeight = 1e-150;
-  if (e < r && h < kMinUnderDiskHeight) h = kMinUnderDiskHeight;
+  if (e <= r && h < kMinUnderDiskHeight) h = kMinUnderDiskHeight;
   // Cone principal axes (geometry.h): Q = h^2 + e^2 - r^2, S = sqrt(Q^2 + 4 r^2 h^2), K = Q + S.
   const double two_rh = 2.0 * r * h;
   const double Q = std::fma(h, h, (e - r) * (e + r));
@@ -92,7 +106,7 @@ EllipseShape ellipse_shape(double h, double e, double r) {
 bool valid_disk_input(const Disk& disk, const Vec3& o) noexcept {
   if (!disk.center.allFinite() || !disk.normal.allFinite() || !o.allFinite()) return false;
   if (!std::isfinite(disk.radius) || disk.radius < 0.0) return false;
-  const double nn = disk.normal.norm();
+  const double nn = scaled_normal(disk.normal).norm();
   return nn > 0.0 && std::isfinite(nn);
 }
 
@@ -105,25 +119,25 @@ SphericalEllipse make_spherical_ellipse(const Disk& disk, const Vec3& o) {
   if (!std::isfinite(disk.radius))
     throw std::invalid_argument("spherical ellipse: non-finite radius");
   if (disk.radius < 0.0) throw std::invalid_argument("spherical ellipse: negative radius");
-  if (!valid_disk_input(disk, o))
-    throw std::invalid_argument("spherical ellipse: zero (or overflowing) normal");
+  if (!valid_disk_input(disk, o)) throw std::invalid_argument("spherical ellipse: zero normal");
   return spherical_ellipse(disk, o);
 }
 
 SphericalEllipse spherical_ellipse(const Disk& disk, const Vec3& o) noexcept {
   if (!valid_disk_input(disk, o)) return {};
-  const double nn = disk.normal.norm();
+  const Vec3 normal = scaled_normal(disk.normal);
+  const double nn = normal.norm();
   SphericalEllipse se;
   se.origin = o;
   se.center = disk.center;
   se.radius = disk.radius;
-  Vec3 n = disk.normal / nn;
+  Vec3 n = normal / nn;
   se.normal = n;
   if (disk.radius == 0.0) return se;
 
   // Height of o above the front face (eq. 3's z_d = -n puts the disk at z_d > 0 iff h > 0).
-  double h = height_dot(o, disk.center, disk.normal) / nn;  // (o - c) . n
-  if (h == 0.0) return se;                                  // in the plane: sees the disk edge-on
+  double h = height_dot(o, disk.center, normal) / nn;  // (o - c) . n
+  if (h == 0.0) return se;                             // in the plane: sees the disk edge-on
   if (h < 0.0) {
     if (!disk.two_sided) return se;  // behind a one-sided disk
     h = -h;
