@@ -37,32 +37,36 @@ struct GamitoSampler {
     GamitoSampler s;
     s.g = MapGeometry::make(disk, o);
     if (s.g.empty) return s;
-    const Vec3 e1 = s.g.frame.x, e2 = s.g.normal.cross(e1);
-    s.rect = SphericalRectangle::make(o, s.g.center - s.g.radius * (e1 + e2), 2.0 * s.g.radius * e1,
-                                      2.0 * s.g.radius * e2);
-    if (!s.rect.valid) {
+    // The square around the disk in R_d (rectangle.h), from the geometry's scalars: no world
+    // coordinates, so its shape does not depend on where the scene sits.
+    s.rect = SphericalRectangle::make(s.g.h / s.g.radius, s.g.e / s.g.radius);
+    s.proposal_pdf = 1.0 / s.rect.S;
+    if (!s.rect.valid || !std::isfinite(s.proposal_pdf)) {
       s.g.empty = true;
       return s;
     }
     s.uniform_pdf = 1.0 / s.g.omega;
-    s.proposal_pdf = 1.0 / s.rect.S;
     return s;
   }
   bool valid() const { return !g.empty; }
 
   // One candidate; valid == accepted; pdf is the proposal density.
   EllipseSample propose(Point2 u) const {
-    if (g.empty) return {};
-    const Vec3 p = rect.sample_point(g.origin, u.x, u.y);
+    if (g.empty || !in_unit_square(u)) return {};
+    double X, Y;
+    rect.sample(u.x, u.y, X, Y);
+    const double dy = Y - rect.y0 - 1.0;  // offset from the centre along -y_d, in radii
+    const math::Frame d = g.disk_frame();
     EllipseSample out;
-    out.point = p;
-    const Vec3 d = p - g.origin;
-    out.direction = d.normalized();
-    // Local direction from the small offset p - c (accurate for distant disks).
-    const Vec3 v = g.to_local(g.center - g.origin) + g.to_local(p - g.center);
-    out.local = v.normalized();
+    // p - c = r (X x_d - dy y_d); p - o = r (X x_d - Y y_d + h z_d), formed from its parts (the
+    // difference of world points would cancel for points close to the disk).
+    const Vec3 pc = g.radius * (X * d.x - dy * d.y);
+    out.point = g.center + pc;
+    out.direction = unit_vector(X * d.x - Y * d.y + (g.h / g.radius) * d.z);
+    // Local direction from the closed-form c - o and the small offset (accurate far away).
+    out.local = unit_vector(g.center_local() + g.to_local(pc));
     out.pdf = proposal_pdf;
-    out.valid = (p - g.center).squaredNorm() <= g.radius * g.radius;
+    out.valid = X * X + dy * dy <= 1.0 && out.direction.squaredNorm() > 0.0;
     return out;
   }
 
@@ -73,7 +77,8 @@ struct GamitoSampler {
 
   // Loops until a candidate is accepted; pdf = 1/Omega. `tries` receives the candidates used.
   EllipseSample sample(Point2 u, sequence::Pcg32& rng, int* tries = nullptr) const {
-    if (g.empty) return {};
+    if (tries) *tries = 0;
+    if (g.empty || !in_unit_square(u)) return {};
     Point2 v = u;
     for (int i = 1; i <= kGamitoMaxTries; ++i) {
       EllipseSample s = propose(v);
