@@ -5,6 +5,7 @@
 #include <string>
 
 #include "command.h"
+#include "common/args.h"
 
 namespace disklab::cli {
 std::vector<Command>& registry() {
@@ -12,6 +13,31 @@ std::vector<Command>& registry() {
   return commands;
 }
 }  // namespace disklab::cli
+
+namespace {
+// Every value given on the command line, for every option of the chosen subcommand: an empty
+// value is an error (it would otherwise mean the option's default: stdout for --out, every name
+// for --sequences), and a number option takes decimal numbers only (CLI11 also reads 0x10, 0b10).
+void check_option_values(const CLI::App& app) {
+  for (const CLI::App* sub : app.get_subcommands()) {
+    for (const CLI::Option* opt : sub->get_options()) {
+      if (opt->count() == 0 || opt->get_type_size_min() == 0) continue;  // not given, or a flag
+      const std::string type = opt->get_type_name();
+      const bool number = type == "INT" || type == "UINT" || type == "FLOAT";
+      for (const std::string& value : opt->results()) {
+        if (value.empty()) throw disklab::cli::UsageError(opt->get_name() + ": empty value");
+        if (number && !disklab::cli::is_decimal_number(value)) {
+          std::string msg = opt->get_name();
+          msg += ": '";
+          msg += value;
+          msg += "' is not a decimal number";
+          throw disklab::cli::UsageError(msg);
+        }
+      }
+    }
+  }
+}
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace disklab::cli;
@@ -62,7 +88,16 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    return action ? action() : 2;
+    check_option_values(app);
+    const int code = action ? action() : 2;
+    // Output that never reached its destination (a full disk, a closed pipe) is a failure, not a
+    // success: flush and look.
+    std::cout.flush();
+    if (std::fflush(stdout) != 0 || std::ferror(stdout) || !std::cout) {
+      std::fprintf(stderr, "disklab: error: writing to stdout failed\n");
+      return 1;
+    }
+    return code;
   } catch (const UsageError& e) {
     std::fprintf(stderr, "disklab: error: %s\n", e.what());
     return 2;

@@ -18,15 +18,45 @@ std::string trim(std::string_view s) {
 }
 }  // namespace
 
+bool is_decimal_number(std::string_view t) {
+  std::size_t i = 0;
+  auto digits = [&] {
+    const std::size_t from = i;
+    while (i < t.size() && t[i] >= '0' && t[i] <= '9')
+      ++i;
+    return i - from;
+  };
+  if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+  std::size_t mantissa = digits();
+  if (i < t.size() && t[i] == '.') {
+    ++i;
+    mantissa += digits();
+  }
+  if (mantissa == 0) return false;
+  if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
+    ++i;
+    if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+    if (digits() == 0) return false;
+  }
+  return i == t.size();
+}
+
 double parse_double(std::string_view text, std::string_view what) {
   const std::string t = trim(text);
   if (t.empty()) throw UsageError(std::string(what) + ": missing value");
+  // Decimal only: strtod would also take hexadecimal ("0x1p-1"), "inf" and "nan".
+  if (!is_decimal_number(t)) throw UsageError(std::string(what) + ": '" + t + "' is not a number");
   char* end = nullptr;
   const double v = std::strtod(t.c_str(), &end);
   if (end != t.c_str() + t.size())
     throw UsageError(std::string(what) + ": '" + t + "' is not a number");
   if (!std::isfinite(v))
     throw UsageError(std::string(what) + ": '" + t + "' is not a finite number");
+  // A non-zero number that rounds to 0 (below the smallest subnormal, 4.9e-324) is not what the
+  // user wrote; subnormal results are kept.
+  const std::size_t mantissa_end = std::min(t.find_first_of("eE"), t.size());
+  if (v == 0.0 && t.substr(0, mantissa_end).find_first_of("123456789") != std::string::npos)
+    throw UsageError(std::string(what) + ": '" + t + "' underflows to 0");
   return v;
 }
 

@@ -11,7 +11,12 @@
 
 namespace disklab::cli {
 
-// A finite double; `what` names the option in the error ("--radius").
+// Whether `text` is a decimal floating-point number ([+-]digits[.digits][e[+-]digits]): no
+// hexadecimal, no inf or nan, no surrounding text.
+bool is_decimal_number(std::string_view text);
+
+// A finite decimal double that does not underflow to 0; `what` names the option in the error
+// ("--radius").
 double parse_double(std::string_view text, std::string_view what);
 
 // Exactly `count` comma-separated finite doubles ("0.5,0.25").

@@ -174,9 +174,29 @@ void run_plot(const std::string& script, const std::vector<std::string>& args,
   }
   std::error_code ec;
   fs::remove(err, ec);
-  if (status != 0 || !fs::exists(out.temp_path()))
-    throw std::runtime_error("plot script '" + script + "' failed (needs python3-matplotlib; " +
-                             "set DISKLAB_PYTHON to choose the interpreter): " + message);
+  if (status != 0 || !fs::exists(out.temp_path())) {
+    // One line, whatever the script or the shell printed: the CLI's errors are single lines.
+    std::string one_line;
+    std::size_t start = 0;
+    while (start < message.size()) {
+      std::size_t end = message.find('\n', start);
+      if (end == std::string::npos) end = message.size();
+      const std::string line = message.substr(start, end - start);
+      if (line.find_first_not_of(" \t\r") != std::string::npos) {
+        if (!one_line.empty()) one_line += " | ";
+        one_line += line;
+      }
+      start = end + 1;
+    }
+    std::string what = "plot script '";
+    what += script;
+    what += "' failed (needs python3-matplotlib; set DISKLAB_PYTHON to choose the interpreter)";
+    if (!one_line.empty()) {
+      what += ": ";
+      what += one_line;
+    }
+    throw std::runtime_error(what);
+  }
   out.commit();
 }
 
