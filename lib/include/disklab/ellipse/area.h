@@ -72,9 +72,10 @@ struct AreaSampler {
 
   // Direction -> (u, v) through the disk point and the inverse concentric map. The hit is found
   // in R_e, from the closed-form c - o and o's height: x - c = t l - R_e^T (c - o), t = h / (-l .
-  // n). Its error is ~eps |c - o| (the direction's own resolution, relative eps d / r of the disk),
-  // independent of where the scene sits in world space (a world-space intersection would add
-  // eps |o| and eps |c|).
+  // n). Its error is ~eps |x - o| / cos(theta_l) (the direction's own resolution: relative
+  // eps d / (r cos theta_l) of the disk), independent of where the scene sits in world space (a
+  // world-space intersection would add eps |o| and eps |c|). Where it reaches the disk's size
+  // (points within ~eps d of the disk's plane) the direction does not determine the hit, nor u.
   Point2 invert(const Vec3& direction) const {
     if (g.empty) return {};
     const Vec3 l = g.to_local(unit_vector(direction));

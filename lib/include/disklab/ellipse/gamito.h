@@ -53,9 +53,8 @@ struct GamitoSampler {
   // One candidate; valid == accepted; pdf is the proposal density.
   EllipseSample propose(Point2 u) const {
     if (g.empty || !in_unit_square(u)) return {};
-    double X, Y;
-    rect.sample(u.x, u.y, X, Y);
-    const double dy = Y - rect.y0 - 1.0;  // offset from the centre along -y_d, in radii
+    double X, Y, dy;  // dy: offset from the centre along -y_d, in radii
+    rect.sample(u.x, u.y, X, Y, dy);
     const math::Frame d = g.disk_frame();
     EllipseSample out;
     // p - c = r (X x_d - dy y_d); p - o = r (X x_d - Y y_d + h z_d), formed from its parts (the

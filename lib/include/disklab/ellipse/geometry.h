@@ -102,11 +102,27 @@ struct SphericalEllipse {
   // exact to a few ulps of each component. Projecting the world vector c - o onto x_e, y_e
   // instead carries an absolute error ~eps |c - o|, i.e. relative ~eps |c - o| / r of the
   // ellipse's size: 1e-8 at 1e8 radii.
+  // The frame comes from the shape at shape_height() (which differs from h only under the disk
+  // or above its rim closer than kMinShapeHeight radii): with h_s = shape_height(),
+  // k = h_s (1 + a_t^2), c - o = (0, -e (h_s a_t^2 + (h_s - h)), e^2 + k h) / |(e, k)|.
+  // Lengths are first scaled by a power of two near 1/r (exact), so that k cannot overflow for
+  // huge disks seen from close by (a_t^2 ~ 1e300 there).
   Vec3 center_local() const {
     if (empty) return Vec3::UnitZ();
-    const double k = h * (1.0 + a_t * a_t), zn = std::hypot(e, k);
-    return {0.0, -(e / zn) * h * (a_t * a_t), (e / zn) * e + (k / zn) * h};
+    const int p = std::ilogb(radius);
+    const double hs = std::ldexp(shape_height(), -p), hh = std::ldexp(h, -p);
+    const double ee = std::ldexp(e, -p);
+    const double k = hs * (1.0 + a_t * a_t), zn = std::hypot(ee, k);
+    const Vec3 l(0.0, -(ee / zn) * (hs * (a_t * a_t) + (hs - hh)), (ee / zn) * ee + (k / zn) * hh);
+    return {0.0, std::ldexp(l.y(), p), std::ldexp(l.z(), p)};
   }
+  // The height the shape (a, b, the frame) is computed for: h, raised to kMinShapeHeight r
+  // under the disk and above its rim (e <= r), where a smaller one changes Omega by less than
+  // rounding but would overflow a_t^2 or reach subnormal terms (ellipse_shape).
+  double shape_height() const {
+    return e <= radius && h < kMinShapeHeight * radius ? kMinShapeHeight * radius : h;
+  }
+  static constexpr double kMinShapeHeight = 1e-150;
 };
 
 // Builds the spherical ellipse of `disk` seen from `o`.

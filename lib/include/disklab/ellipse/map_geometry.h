@@ -100,13 +100,16 @@ struct MapGeometry : SphericalEllipse {
     const Vec3 l = to_local(unit);
     // z_e > 0 up to the same absolute error: near-hemisphere ellipses reach the horizon z = 0.
     if (!(l.z() > -kDirectionAbsError)) return false;
-    const double qx = l.x() / a_t, qy = l.y() / b_t;
-    const double f = qx * qx + qy * qy - l.z() * l.z();
-    const double grad =
-        2.0 * std::sqrt(qx * qx / (a_t * a_t) + qy * qy / (b_t * b_t) + l.z() * l.z());
+    // Everything multiplied by b_t^2 (b_t <= a_t), so that slivers with b_t ~ 1e-300 neither
+    // overflow nor lose the slack: F b_t^2 = (x b_t/a_t)^2 + y^2 - (z b_t)^2, and the bound's
+    // terms scale alike.
+    const double ratio = b_t / a_t, zb = l.z() * b_t;
+    const double xr = l.x() * ratio;
+    const double f = xr * xr + l.y() * l.y() - zb * zb;
+    const double grad = 2.0 * std::hypot(xr * ratio, l.y(), zb * b_t);
     const double rel = (1.0 + kRimSlack) * (1.0 + kRimSlack) - 1.0;
-    const double curv = std::max(1.0, 1.0 / (b_t * b_t));  // b_t <= a_t
-    return f <= l.z() * l.z() * rel + grad * kDirectionAbsError +
+    const double curv = std::max(1.0, b_t * b_t);
+    return f <= zb * zb * rel + grad * kDirectionAbsError +
                     curv * kDirectionAbsError * kDirectionAbsError;
   }
 

@@ -34,24 +34,27 @@ namespace disklab::ellipse {
 inline constexpr double kRectangleNewtonTol = 1e-15;
 
 struct SphericalRectangle {
-  double h = 0.0, y0 = 0.0, y1 = 0.0;  // depth and y range, in radii
-  double S = 0.0;                      // solid angle of the rectangle seen from o
+  double h = 0.0, yc = 0.0;  // depth and the square's centre in y, in radii (y0, y1 = yc -+ 1)
+  double S = 0.0;            // solid angle of the rectangle seen from o
   bool valid = false;
 
   using W = long double;
 
-  // D(X) = h1(X) - h0(X) (see the header comment) and L0, L1.
+  // The ends in W: y1 - y0 = 2 and y1 + y0 = 2 yc are used as such where they matter (for a
+  // square far to the side, yc -+ 1 may round to the same double).
+  W y0() const { return W(yc) - 1; }
+  W y1() const { return W(yc) + 1; }
+  // D(X) = h1(X) - h0(X) (see the header comment).
   W height_range(W X) const {
-    const W hh = W(h) * h, xx = X * X;
-    const W L0 = std::sqrt(xx + W(y0) * y0 + hh), L1 = std::sqrt(xx + W(y1) * y1 + hh);
-    if (y0 >= 0.0)
-      return (W(y1) - y0) * (W(y1) + y0) * (xx + hh) / (L0 * L1 * (W(y1) * L0 + W(y0) * L1));
-    return W(y1) / L1 - W(y0) / L0;
+    const W hh = W(h) * h, xx = X * X, y0 = this->y0(), y1 = this->y1();
+    const W L0 = std::sqrt(xx + y0 * y0 + hh), L1 = std::sqrt(xx + y1 * y1 + hh);
+    if (yc >= 1.0) return 4 * W(yc) * (xx + hh) / (L0 * L1 * (y1 * L0 + y0 * L1));
+    return y1 / L1 - y0 / L0;
   }
   // G(X): the solid angle of [0, X] x [y0, y1] (signed).
   W G(W X) const {
-    const W hh = W(h) * h, xx = X * X;
-    const W L0 = std::sqrt(xx + W(y0) * y0 + hh), L1 = std::sqrt(xx + W(y1) * y1 + hh);
+    const W hh = W(h) * h, xx = X * X, y0 = this->y0(), y1 = this->y1();
+    const W L0 = std::sqrt(xx + y0 * y0 + hh), L1 = std::sqrt(xx + y1 * y1 + hh);
     const W A = X * y1 / (h * L1), B = X * y0 / (h * L0);
     return std::atan2((X / h) * height_range(X), 1 + A * B);
   }
@@ -63,15 +66,17 @@ struct SphericalRectangle {
         !std::isfinite(e_over_r))
       return q;
     q.h = h_over_r;
-    q.y0 = e_over_r - 1.0;
-    q.y1 = e_over_r + 1.0;
+    q.yc = e_over_r;
     q.S = static_cast<double>(2 * q.G(1));
     q.valid = q.S > 0.0 && std::isfinite(q.S);
     return q;
   }
 
-  // The point (X, Y) on the square, in radii, for (u, v) in [0, 1]^2: uniform in solid angle.
-  void sample(double u, double v, double& X, double& Y) const {
+  // The point on the square for (u, v) in [0, 1]^2, uniform in solid angle: X, Y in radii and
+  // dy = Y - yc, the offset from the centre, formed without cancellation: with Y(h) = dist h /
+  // sqrt(1 - h^2) and Y(h0) = y0, Y - y0 = dist (h_v^2 - h0^2) / (sqrt(q_v q0) (h_v sqrt(q0) +
+  // h0 sqrt(q_v))) and h_v^2 - h0^2 = v D (h_v + h0), positive terms where h0 >= 0.
+  void sample(double u, double v, double& X, double& Y, double& dy) const {
     const W target = (W(u) - 0.5L) * S;
     auto eval = [&](double x) {
       const W d = height_range(x);
@@ -85,7 +90,8 @@ struct SphericalRectangle {
                                               kRectangleNewtonTol * S, 1e-17, 200)
                          .x;
     const W xx = W(X) * X, hh = W(h) * h, dist2 = xx + hh;
-    const W L0 = std::sqrt(dist2 + W(y0) * y0), L1 = std::sqrt(dist2 + W(y1) * y1);
+    const W y0 = this->y0(), y1 = this->y1();
+    const W L0 = std::sqrt(dist2 + y0 * y0), L1 = std::sqrt(dist2 + y1 * y1);
     const W h0 = y0 / L0, h1 = y1 / L1, D = height_range(X);
     const W q0 = dist2 / (L0 * L0), q1 = dist2 / (L1 * L1);  // 1 - h_i^2
     W hv, q;
@@ -97,7 +103,16 @@ struct SphericalRectangle {
       q = hv < 0 ? q0 + W(v) * D * (-h0 - hv) : q1 + (1 - W(v)) * D * (h1 + hv);
     }
     const W y = hv * std::sqrt(dist2) / std::sqrt(q);
-    Y = static_cast<double>(std::clamp(y, W(y0), W(y1)));
+    W from_y0;  // Y - y0
+    if (h0 >= 0) {
+      from_y0 = std::sqrt(dist2) * W(v) * D * (hv + h0) /
+                (std::sqrt(q * q0) * (hv * std::sqrt(q0) + h0 * std::sqrt(q)));
+    } else {
+      from_y0 = y - y0;
+    }
+    from_y0 = std::clamp(from_y0, W(0), W(2));
+    Y = static_cast<double>(y0 + from_y0);
+    dy = static_cast<double>(from_y0 - 1);
   }
 };
 
