@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -91,7 +92,8 @@ EllipseShape ellipse_shape(double h, double e, double r) {
   const double ath = s.a_t * (h / r);
   s.one_minus_n_r = ath * ath;
   s.m = s.a * s.a * s.n_r;
-  s.one_minus_m = (hb / ha) * (hb / ha);
+  // b_t <= a_t, so 1 - m <= 1; on the axis (a_t == b_t) the two roundings can exceed it by ulps.
+  s.one_minus_m = std::min(1.0, (hb / ha) * (hb / ha));
   s.c_t = s.a;
   s.radial_coefficient = s.a * (h / r);  // eq. (19): b (1 - a^2) / (a sqrt(1 - b^2)) = a h / r
   // Ellipse centre: eigenvector of the cone's negative eigenvalue, (0, -e, h (1 + 2 r^2/K)).
@@ -132,7 +134,10 @@ SphericalEllipse spherical_ellipse(const Disk& disk, const Vec3& o) noexcept {
   se.radius = disk.radius;
   Vec3 n = normal / nn;
   se.normal = n;
-  if (disk.radius == 0.0) return se;
+  // A subnormal radius carries fewer than 52 bits, as do the coordinates of a disk that small
+  // seen from close enough to see it: below the smallest normal double the disk is taken as a
+  // point, like radius 0 (found by fuzz_maps: directions off such disks by 1e-3).
+  if (disk.radius < std::numeric_limits<double>::min()) return se;
 
   // Height of o above the front face (eq. 3's z_d = -n puts the disk at z_d > 0 iff h > 0).
   double h = height_dot(o, disk.center, normal) / nn;  // (o - c) . n

@@ -127,7 +127,8 @@ struct SphericalEllipse {
 
 // Builds the spherical ellipse of `disk` seen from `o`.
 // Throws std::invalid_argument for non-finite input, a zero normal or a negative radius.
-// Defined answers: radius 0, o in the disk's plane, o behind a one-sided disk -> empty.
+// Defined answers: radius 0 (or subnormal), o in the disk's plane, o behind a one-sided disk ->
+// empty.
 SphericalEllipse make_spherical_ellipse(const Disk& disk, const Vec3& o);
 // The same without exceptions: invalid input also gives an empty ellipse (for the samplers'
 // set-up, which renderers may build with -fno-exceptions).
