@@ -155,7 +155,12 @@ double AnyMap::pdf(const Vec3& direction) const {
 
 std::optional<Point2> AnyMap::invert(const Vec3& direction) const {
   // projected's image is the part of the disk above the receiver's horizon.
-  if (const auto* p = std::get_if<ProjectedMap>(&map_)) return p->invert(direction);
+  if (const auto* p = std::get_if<ProjectedMap>(&map_)) {
+    // The same finite answer as every map below (projected's seam can give NaN near the rim).
+    const auto u = p->invert(direction);
+    if (u && std::isfinite(u->x) && std::isfinite(u->y)) return u;
+    return std::nullopt;
+  }
   if (!has_inverse() || !contains(direction)) return std::nullopt;
   const Vec3 d = unit_vector(direction);
   const MapGeometry& g = geometry();

@@ -379,7 +379,7 @@ struct ProjectedMap {
 
   EllipseSample sample(Point2 u, int* iterations = nullptr) const {
     if (iterations) *iterations = 0;
-    if (g.empty || !(u.x == u.x) || !(u.y == u.y)) return {};
+    if (g.empty || !in_unit_square(u)) return {};
     const double s = solve_s(u.x, iterations);
     const Meridian md = meridian(s, clipped ? pieces.kind[piece_of(s)] : 1);
     if (md.kind == 0 || !(md.t_hi > md.t_lo)) return {};
