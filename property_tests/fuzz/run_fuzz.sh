@@ -4,7 +4,7 @@
 # entries and crash artifacts go to WORK (the build tree), never into the source tree; a finding
 # makes the test fail and leaves its input in WORK/artifacts/ (copy it into corpus/<name>/ to keep
 # it as a regression). -seed=1 makes every run try the same inputs, so CI does not flake; explore
-# with other seeds and longer runs by hand. open_findings/ holds inputs not fixed yet (not run).
+# with other seeds and longer runs by hand.
 # Usage: run_fuzz.sh BINARY CORPUS WORK SECONDS
 set -eu
 bin=$1 corpus=$2 work=$3 seconds=$4
