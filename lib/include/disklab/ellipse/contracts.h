@@ -170,9 +170,11 @@ inline Violation check_inverse(const AnyMap& m, const EllipseSample& s) {
   }
   if (m.kind() == MapKind::parallel) {
     resolution += kParallelInverseRel * g.alpha;
-    // Known limit (issue 17, open): for points within ~1e-4 r of the plane of the disk's rim the
-    // rim slices (eps1 within kParallelRimSlices of 0 or 1) round-trip only to ~1e-3 rad; their
-    // round trip is not asserted there.
+    // Known limit (open): within ~1e-4 r of the plane of the disk's rim the rim slices (eps1
+    // within kParallelRimSlices of 0 or 1) round-trip only to ~1e-3 rad. Cause: Newton stops at
+    // an absolute 1e-15 Omega of Omega_p, and there the slices holding the last 1e-15 of the mass
+    // span h_p from ~a to 0 (1 - m ~ h/r is tiny, so h_p stays ~a until cos varphi ~ sqrt(1 - m));
+    // solving the complementary mass from the rim end to a relative tolerance would fix it.
     const auto u = m.invert(s.direction);
     if (u && std::abs(u->x - 0.5) > 0.5 - kParallelRimSlices && g.cos_alpha < 1e-2)
       return Violation::none;
