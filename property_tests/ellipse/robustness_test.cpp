@@ -119,7 +119,7 @@ TEST(Robustness, Item02_GamitoDirectionIsUnitNearThePlane) {
 }
 
 // 3. Near the plane the rim samples reach the disk: the radial family's h and parallel's slice ends
-// are formed without cancellation (they were parallel to the disk: (-1, 0, 0), (0, -1, 0)).
+// are formed without cancellation (issue 17 reported (-1, 0, 0) and (0, -1, 0), parallel to it).
 TEST(Robustness, Item03_RimDirectionsReachTheDiskNearItsPlane) {
   const auto parallel = make("parallel", kUnitDisk, Vec3(0, 0, 1e-9));
   const auto p = parallel.sample({0.24999999999999997, 0});
@@ -150,7 +150,7 @@ TEST(Robustness, Item04_ParallelSliceEndsHitTheRim) {
 }
 
 // 5. Above the rim at h = 1e-14 .. 1e-20 r, Omega_r(s) agrees with an independent quadrature (it
-// was off by 4e-10 .. inf), radial and radial-fast give the same angles, and the radial map is
+// issue 17: off by 4e-10 .. inf), radial and radial-fast give the same angles, and the map is
 // uniform (KS test of eps1 recomputed from the sampled direction's azimuth by quadrature).
 TEST(Robustness, Item05_RadialUniformAboveTheRim) {
   using boost::math::quadrature::gauss_kronrod;
@@ -253,7 +253,7 @@ TEST(Robustness, Item06_AreaAtExtremeRadiiAndFarFromTheOrigin) {
     EXPECT_TRUE(m.sample({0.3, 0.7}).valid);
   }
   // Near the plane: the pdf equals |o - x|^3 / (pi r^2 h) of the returned point to rounding
-  // (1e-12, several ulps of each factor); it was 2.4e-6 off from the rounded cosine.
+  // (1e-12, several ulps of each factor); from the rounded direction's cosine it is not.
   const Vec3 o(1, 0, 9.9999999999999998e-13);
   const auto m = make("area", kUnitDisk, o);
   const auto s = m.sample({0, 0});
@@ -262,7 +262,7 @@ TEST(Robustness, Item06_AreaAtExtremeRadiiAndFarFromTheOrigin) {
   EXPECT_NEAR(s.pdf / (dist * dist * dist / (math::kPi * o.z())), 1.0, 1e-12);
   // Inverse far from the origin: the same local scene at 1e8 and 1e15 from the world origin
   // round-trips to the direction's resolution, eps d / r ~ 1e-15 here (1e-12 leaves room for the
-  // concentric map's conditioning); it was 3.2e-9 and 0.029.
+  // concentric map's conditioning); issue 17 reported 3.2e-9 and 0.029.
   for (const double shift : {1e8, 1e15}) {
     const Vec3 t(shift, -shift, shift);
     const Disk d{Vec3(0, 0, 1) + t, Vec3(0, 0, -1), 1.0, false};
@@ -302,7 +302,7 @@ TEST(Robustness, Item07_GamitoSamplesWhereTheDiskIsVisible) {
 }
 
 // 8. Normals of any finite non-zero length give the same map; above the rim at subnormal heights
-// Omega is the limit pi (it was 2 pi, or nothing).
+// Omega is the limit pi (issue 17 reported 2 pi, or no sample).
 TEST(Robustness, Item08_ShortLongNormalsAndSubnormalHeights) {
   const Vec3 o(0.3, 0.1, 1.0);
   const auto ref = make("radial", kUnitDisk, o);

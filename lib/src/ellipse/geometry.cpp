@@ -136,7 +136,7 @@ SphericalEllipse spherical_ellipse(const Disk& disk, const Vec3& o) noexcept {
   se.normal = n;
   // A subnormal radius carries fewer than 52 bits, as do the coordinates of a disk that small
   // seen from close enough to see it: below the smallest normal double the disk is taken as a
-  // point, like radius 0 (found by fuzz_maps: directions off such disks by 1e-3).
+  // point, like radius 0 (its directions would miss it by up to ~1e-3).
   if (disk.radius < std::numeric_limits<double>::min()) return se;
 
   // Height of o above the front face (eq. 3's z_d = -n puts the disk at z_d > 0 iff h > 0).
