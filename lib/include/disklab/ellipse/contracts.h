@@ -167,6 +167,8 @@ inline Violation check_inverse(const AnyMap& m, const EllipseSample& s) {
     const double dist = math::safe_norm(s.point - g.origin);
     const double hit_error = area_direction_error(g, s) * dist / (cos_light * g.radius);
     if (!(hit_error < 1e-6)) return Violation::none;
+    // The hit's error over |x - o|, seen from o: the direction's error over cos(theta_l).
+    resolution += kResolutionFactor * area_direction_error(g, s) / cos_light;
   }
   if (m.kind() == MapKind::parallel) {
     resolution += kParallelInverseRel * g.alpha;

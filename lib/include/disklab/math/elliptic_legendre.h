@@ -280,9 +280,12 @@ double ellint_pi_dd(double n, double one_minus_n, double one_minus_n_lo, double 
 
 // Whether these (already validated: phi in [0, pi/2], m <= 1, n <= 1) arguments are in the
 // kernel's domain. n = 0 stays on the portable path, which answers it with F itself
-// (Pi(0; phi|m) == F(phi|m) exactly). The second form also checks a caller's 1 - n.
+// (Pi(0; phi|m) == F(phi|m) exactly). n below -2^1000 also does: the kernel's double-double
+// intermediates (m - n and its products, with their error terms) overflow within a few ulps of
+// -DBL_MAX (NaN at n = -1.7976931348623151e308), while the portable path's long
+// double has the exponent range. The second form also checks a caller's 1 - n.
 inline bool pi_dd_domain(double n, double phi, double m) {
-  return phi > 0 && m >= 0 && n != 0 && n > -std::numeric_limits<double>::infinity();
+  return phi > 0 && m >= 0 && n != 0 && n > -0x1p1000;
 }
 inline bool pi_dd_domain(double n, double one_minus_n, double phi, double m) {
   return pi_dd_domain(n, phi, m) && one_minus_n < std::numeric_limits<double>::infinity();
