@@ -48,6 +48,9 @@ def main():
 
     values = [e for per in curves.values() for pts in per.values() for _, e in pts if e > 0]
     ymin, ymax = min(values) / 1.5, max(values) * 1.5
+    # A curve at rounding level (a zero-variance estimator) would squash every shared panel:
+    # the axis spans at most 1e9 below the largest error, and such a panel says so instead.
+    ymin = max(ymin, ymax * 1e-9)
     strategies = list(curves)
     cols = 2
     rows = math.ceil(len(strategies) / cols)
@@ -78,6 +81,10 @@ def main():
                 label += " (%.2f)" % slopes[(st, seq)]
             ax.loglog([n for n, _ in pts], [e for _, e in pts], marker="o", ms=2.5, lw=1.1,
                       color=colors[seq], label=label, zorder=2)
+        top = max(e for pts in curves[st].values() for _, e in pts)
+        if top < ymin:
+            ax.text(0.5, 0.5, "RMS below %.0e: rounding\n(zero-variance estimator)" % top,
+                    transform=ax.transAxes, ha="center", va="center", fontsize=9)
         ax.set_title(st, fontsize=11)
         ax.set_xscale("log", base=2)
         ax.set_ylim(ymin, ymax)
