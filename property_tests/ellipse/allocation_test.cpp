@@ -8,6 +8,7 @@
 #include <new>
 
 #include "disklab/ellipse/any_map.h"
+#include "disklab/ellipse/area_lean.h"
 #include "ellipse/map_common.h"
 
 namespace {
@@ -70,6 +71,18 @@ TEST(MapAllocation, SetUpSamplingAndPdfAllocateNothing) {
       counting = false;
       EXPECT_EQ(allocations, 0) << name << " on " << c.describe() << " (sink " << sink << ")";
     }
+    // The lean area sampler (bench_maps' baseline): the light once, then per shading point.
+    counting = true;
+    allocations = 0;
+    const ellipse::LeanDiskLight light = ellipse::LeanDiskLight::make(c.disk());
+    const ellipse::LeanAreaSampler lean = ellipse::LeanAreaSampler::make(light, c.point);
+    double sink = 0.0;
+    for (int i = 0; i < 16; ++i) {
+      const ellipse::LightSample s = lean.sample({(i + 0.5) / 16, (i * 7 % 16 + 0.5) / 16});
+      sink += lean.pdf(s.direction);
+    }
+    counting = false;
+    EXPECT_EQ(allocations, 0) << "lean area on " << c.describe() << " (sink " << sink << ")";
   }
 }
 
