@@ -2,6 +2,9 @@
 // Shared by the bench_*.cpp programs: the console table as usual, then a summary of the ratios
 // each program measured in the same run (the number to read on a loaded 2-core machine).
 #include <benchmark/benchmark.h>
+#include <unistd.h>
+
+#include <cstdio>
 
 #include <functional>
 #include <map>
@@ -25,7 +28,10 @@ inline double counter(const Counters& counters, const std::string& key) {
 class SummaryReporter : public benchmark::ConsoleReporter {
  public:
   using Summary = std::function<void(const Results&)>;
-  explicit SummaryReporter(Summary summary) : summary_(std::move(summary)) {}
+  // Colours only on a terminal: a file or a pipe gets plain text (scripts/bench greps it).
+  explicit SummaryReporter(Summary summary)
+      : ConsoleReporter(isatty(fileno(stdout)) ? OO_ColorTabular : OO_Tabular),
+        summary_(std::move(summary)) {}
 
   void ReportRuns(const std::vector<Run>& runs) override {
     ConsoleReporter::ReportRuns(runs);

@@ -1,34 +1,40 @@
-// Per-sample cost of the spherical-ellipse maps (issue 5, "the Newton-Raphson vs tabulated
-// question"): area, gamito, parallel, radial, ld-radial, radial4, tabulated, radial-fast and
-// projected (receiver normal +z, the configurations' disks all above its horizon), over
-// a fixed set of configurations (near, mid, far, grazing), all in one run.
+// Cost of the spherical-ellipse maps per shading point (issues 5 and 16): area, gamito, parallel,
+// radial, ld-radial, radial4, tabulated, radial-fast and projected (receiver normal +z, the
+// configurations' disks all above its horizon), and the published radial method re-implemented
+// from the paper (published.h: Boost ellint_3 with its default and its double policy, and the
+// tabulated variant), over a fixed set of configurations (near, mid, far, grazing, very-far),
+// all in one run.
 //
 // Ratios, not absolute times. Every timed benchmark interleaves, batch by batch, the map under
-// test with area sampling (the baseline of Guillén et al. 2017) and with a concentric and a polar
-// disk sample, on the SAME square points; the times are accumulated separately and their
-// quotients reported as counters (`ratio_to_area`, `ratio_to_concentric`, `ratio_to_polar`). Load
-// from other processes hits all of them alike and cancels in the quotients.
+// test with the LEAN AREA BASELINE (area_lean.h: area sampling as a renderer writes it, a
+// concentric point in world space and d^2 / (A cos)), and with a concentric and a polar disk
+// sample, on the SAME square points; the times are accumulated separately and their quotients
+// reported as counters (`ratio_to_lean`, `ratio_to_concentric`, `ratio_to_polar`). Load from other
+// processes hits all of them alike and cancels in the quotients. `area` is disklab's precise
+// ellipse-frame area sampler (area.h), measured like any other map.
 //
 // Inputs: a fixed array of 4096 Owen-scrambled Sobol' points (seed 1), so branch patterns
 // (quadrants, Newton paths, rejections) are those of a renderer, not of a single repeated u.
 //
 // What an item is:
 //  - sample/<map>/<config>: one direction with its pdf. radial4 returns four per root solve and
-//    counts four; tabulated counts every candidate (a rejected one is a zero-weight sample of its
-//    unbiased estimator; `accept` reports the acceptance rate); gamito counts accepted samples
-//    (it loops until one is accepted; `tries` reports candidates per sample).
-//  - setup/<map>/<config>: one `make` per shading point (counter `ratio_to_area`: against
-//    AreaSampler::make).
+//    counts four; tabulated (both) counts every candidate (a rejected one is a zero-weight sample;
+//    `accept` reports the acceptance rate); gamito counts accepted samples (it loops until one is
+//    accepted; `tries` reports candidates per sample).
+//  - setup/<map>/<config>: one `make` per shading point, against the lean baseline's make.
 //  - amortized/<map>/<config>/<k>: one `make` followed by k samples, per sample, against the same
-//    for area sampling (k = 1, 16, 256).
+//    for the lean baseline (k = 1, 16, 256): k = 1 is one light sample per shading point.
 // Newton maps also report `evals`: mean evaluations of the cumulative solid angle per sample.
+// Maps that reproduce the exact radial map (radial, radial-fast, published-*) report `q_err`:
+// the largest error of their samples' quadrant fraction, |4 eps1(w) - 4 u.x| with eps1(w) the
+// exact radial map's inverse of the returned direction (accepted samples only).
 //
-// The summary after the table gives the median ratios per map and configuration and checks the
-// issue's targets: exact radial <= 6x area, radial-fast <= 2x, tabulated <= 1.3x.
+// The summary after the table gives the median ratios, bytes per shading point, and checks the
+// targets of issues 5, 16 and 19.
 //
 // Run: build/<preset>/bin/bench_maps --benchmark_repetitions=5
-// --benchmark_report_aggregates_only=true (add --benchmark_filter=sample/ for the per-sample part
-// only).
+// --benchmark_report_aggregates_only=true --benchmark_min_time=0.1 (about 25 minutes; add
+// --benchmark_filter='/(radial|published-radial-double)/' for a part).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -37,12 +43,14 @@
 #include <cstdio>
 #include <map>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "bench_common.h"
 #include "disklab/disk/concentric.h"
 #include "disklab/disk/polar.h"
 #include "disklab/ellipse/area.h"
+#include "disklab/ellipse/area_lean.h"
 #include "disklab/ellipse/gamito.h"
 #include "disklab/ellipse/ld_radial.h"
 #include "disklab/ellipse/parallel.h"
@@ -53,35 +61,33 @@
 #include "disklab/ellipse/tabulated.h"
 #include "disklab/sequence/random.h"
 #include "disklab/sequence/sobol.h"
+#include "published.h"
 
 namespace {
 using disklab::Point2;
 using disklab::Vec3;
 namespace ell = disklab::ellipse;
 namespace disk = disklab::disk;
+namespace pub = disklab::bench;
 using Clock = std::chrono::steady_clock;
 
 // Square points per timed batch: long enough (>= ~5 us for the cheapest map) that the two clock
-// reads per batch are noise, short enough that the three timed loops alternate often.
+// reads per batch are noise, short enough that the timed loops alternate often.
 constexpr int kBatch = 256;
 constexpr int kPoints = 4096;  // the fixed point set; batches walk through it
-
-// The issue's targets, as ratios to area sampling in the same run.
-constexpr double kTargetRadial = 6.0;
-constexpr double kTargetRadialFast = 2.0;
-constexpr double kTargetTabulated = 1.3;
 
 struct Config {
   const char* name;
   Vec3 center, normal;
   double radius;
   Vec3 o;
+  ell::Disk disk() const { return ell::Disk{center, normal, radius, false}; }
 };
 
 // Unit disk facing the shading point at the origin (normal -z or tilted: the lit side is +normal).
-const std::array<Config, 4>& configs() {
+const std::array<Config, 5>& configs() {
   static const Vec3 tilted = Vec3(0.3, -0.2, -1.0).normalized();
-  static const std::array<Config, 4> c = {{
+  static const std::array<Config, 5> c = {{
       // Close and off axis: alpha ~ 60 degrees, the map far from its planar limit.
       {"near", Vec3(0.3, 0.2, 0.5), Vec3(0, 0, -1), 1.0, Vec3::Zero()},
       // A few radii away, tilted: the typical area light in a room.
@@ -90,8 +96,22 @@ const std::array<Config, 4>& configs() {
       {"far", Vec3(300.0, 200.0, 1000.0), tilted, 1.0, Vec3::Zero()},
       // Seen almost edge-on (beta / alpha ~ 1e-2): the eccentric limit.
       {"grazing", Vec3(3.0, 0.0, 0.05), Vec3(0, 0, -1), 1.0, Vec3::Zero()},
+      // Ten thousand radii away (alpha ~ 1e-4), issue 16's one-sample scene.
+      {"very-far", Vec3(3000.0, 2000.0, 9500.0), tilted, 1.0, Vec3::Zero()},
   }};
   return c;
+}
+
+// The lean baseline's per-light part, built once per configuration (a renderer builds it once
+// per light, not per shading point).
+const ell::LeanDiskLight& lean_light(const Config& c) {
+  static const std::array<ell::LeanDiskLight, 5> lights = [] {
+    std::array<ell::LeanDiskLight, 5> l;
+    for (std::size_t i = 0; i < l.size(); ++i)
+      l[i] = ell::LeanDiskLight::make(configs()[i].disk());
+    return l;
+  }();
+  return lights[static_cast<std::size_t>(&c - configs().data())];
 }
 
 const std::vector<Point2>& points() {
@@ -105,33 +125,45 @@ const std::vector<Point2>& points() {
   return pts;
 }
 
+// A configuration with its shading point nudged (per make in the set-up and amortized loops: a
+// fixed input could let the branch predictor learn more than a renderer's stream allows).
+Config nudged(const Config& c, Point2 p) {
+  Config ci = c;
+  ci.o = c.o + 1e-3 * Vec3(p.x, p.y, 0.0);
+  return ci;
+}
+
 // ---- one adapter per map: how to build it and how to draw a batch of samples ----
 // draw(m, u, n, sink) maps the n square points u[0..n) and returns the number of samples made.
+// make(c, light) gets the configuration and its lean light (only the lean baseline uses it).
 
 template <class M>
-struct Plain {  // maps with sample(Point2) -> EllipseSample
-  static M make(const Config& c) {
-    return M::make(ell::Disk{c.center, c.normal, c.radius, false}, c.o);
-  }
+struct Plain {  // maps with make(Disk, o) and sample(Point2) -> EllipseSample
+  static M make(const Config& c, const ell::LeanDiskLight&) { return M::make(c.disk(), c.o); }
   static int draw(const M& m, const Point2* u, int n, double& sink) {
     for (int i = 0; i < n; ++i) {
-      const ell::EllipseSample s = m.sample(u[i]);
+      const auto s = m.sample(u[i]);
       sink += s.direction.x() + s.pdf;
     }
     return n;
   }
 };
 
+struct LeanA : Plain<ell::LeanAreaSampler> {
+  static ell::LeanAreaSampler make(const Config& c, const ell::LeanDiskLight& light) {
+    return ell::LeanAreaSampler::make(light, c.o);
+  }
+};
+
 struct ProjectedAdapter : Plain<ell::ProjectedMap> {
-  static ell::ProjectedMap make(const Config& c) {
-    return ell::ProjectedMap::make(ell::Disk{c.center, c.normal, c.radius, false}, c.o,
-                                   Vec3::UnitZ());
+  static ell::ProjectedMap make(const Config& c, const ell::LeanDiskLight&) {
+    return ell::ProjectedMap::make(c.disk(), c.o, Vec3::UnitZ());
   }
 };
 
 struct Radial4Adapter {
-  static ell::Radial4Map make(const Config& c) {
-    return ell::Radial4Map::make(ell::Disk{c.center, c.normal, c.radius, false}, c.o);
+  static ell::Radial4Map make(const Config& c, const ell::LeanDiskLight&) {
+    return ell::Radial4Map::make(c.disk(), c.o);
   }
   // n / 4 root solves, four directions each: n samples, the same count as the other maps.
   static int draw(const ell::Radial4Map& m, const Point2* u, int n, double& sink) {
@@ -145,8 +177,8 @@ struct Radial4Adapter {
 };
 
 struct GamitoAdapter {
-  static ell::GamitoSampler make(const Config& c) {
-    return ell::GamitoSampler::make(ell::Disk{c.center, c.normal, c.radius, false}, c.o);
+  static ell::GamitoSampler make(const Config& c, const ell::LeanDiskLight&) {
+    return ell::GamitoSampler::make(c.disk(), c.o);
   }
   static int draw(const ell::GamitoSampler& m, const Point2* u, int n, double& sink) {
     static thread_local disklab::sequence::Pcg32 rng(7);
@@ -158,7 +190,9 @@ struct GamitoAdapter {
   }
 };
 
-using AreaA = Plain<ell::AreaSampler>;
+using PublishedDouble = Plain<pub::PublishedRadial<pub::DoublePolicy>>;
+using PublishedDefault = Plain<pub::PublishedRadial<pub::DefaultPolicy>>;
+using PublishedTab = Plain<pub::PublishedTabulated>;
 
 template <Point2 (*F)(Point2)>
 int draw_disk(const Point2* u, int n, double& sink) {
@@ -169,7 +203,9 @@ int draw_disk(const Point2* u, int n, double& sink) {
   return n;
 }
 
-// Mean Newton evaluations per sample over the point set (untimed; maps without a root solve: 0).
+// ---- untimed diagnostics ----
+
+// Mean Newton evaluations per sample over the point set (maps without a root solve: 0).
 template <class M>
 double mean_evaluations(const M& m) {
   if constexpr (requires(Point2 u, int* it) { m.sample(u, it); } &&
@@ -194,6 +230,34 @@ double mean_evaluations(const M& m) {
   }
 }
 
+// Maps whose samples should be the exact radial map's (up to their own error).
+template <class A>
+constexpr bool kReproducesRadial =
+    std::is_same_v<A, Plain<ell::RadialMap>> || std::is_same_v<A, Plain<ell::RadialFastMap>> ||
+    std::is_same_v<A, PublishedDouble> || std::is_same_v<A, PublishedDefault> ||
+    std::is_same_v<A, PublishedTab>;
+
+// Largest |4 eps1(w) - 4 u.x| over the point set (see the header), or -1.
+template <class A, class M>
+double quadrant_error(const M& m, const Config& c) {
+  if constexpr (!kReproducesRadial<A>) {
+    return -1.0;
+  } else {
+    const ell::RadialMap exact = ell::RadialMap::make(c.disk(), c.o);
+    double worst = 0.0;
+    for (const Point2& u : points()) {
+      const auto s = m.sample(u);
+      if (!s.valid) continue;
+      const Point2 back = exact.invert(s.direction);
+      // eps1 is periodic: a direction on the +x_e seam may come back as 0 or 1.
+      double d = std::abs(back.x - u.x);
+      d = std::min(d, 1.0 - d);
+      worst = std::max(worst, 4.0 * d);
+    }
+    return worst;
+  }
+}
+
 // Median of per-batch times: a batch preempted by another process is an outlier on one side and
 // moves the median by at most one rank, while it would bias a sum.
 double median(std::vector<double>& v) {
@@ -210,15 +274,16 @@ inline double seconds(Clock::time_point a, Clock::time_point b) {
 // ---- per-sample cost, interleaved with the baselines ----
 template <class A>
 void BM_Sample(benchmark::State& state, const Config& c) {
-  const auto m = A::make(c);
-  const auto area = AreaA::make(c);
-  if (!m.valid() || !area.valid()) {
+  const ell::LeanDiskLight& light = lean_light(c);
+  const auto m = A::make(c, light);
+  const auto lean = LeanA::make(c, light);
+  if (!m.valid() || !lean.valid()) {
     state.SkipWithError("invalid configuration");
     return;
   }
   const std::vector<Point2>& u = points();
   double sink = 0.0;
-  std::vector<double> t_map, t_area, t_conc, t_polar;  // per batch
+  std::vector<double> t_map, t_lean, t_conc, t_polar;  // per batch
   long n_map = 0;
   int per_batch = kBatch;
   int offset = 0;
@@ -228,7 +293,7 @@ void BM_Sample(benchmark::State& state, const Config& c) {
     const auto t0 = Clock::now();
     per_batch = A::draw(m, batch, kBatch, sink);
     const auto t1 = Clock::now();
-    AreaA::draw(area, batch, kBatch, sink);
+    LeanA::draw(lean, batch, kBatch, sink);
     const auto t2 = Clock::now();
     draw_disk<disk::sample_concentric>(batch, kBatch, sink);
     const auto t3 = Clock::now();
@@ -236,7 +301,7 @@ void BM_Sample(benchmark::State& state, const Config& c) {
     const auto t4 = Clock::now();
     n_map += per_batch;
     t_map.push_back(seconds(t0, t1));
-    t_area.push_back(seconds(t1, t2));
+    t_lean.push_back(seconds(t1, t2));
     t_conc.push_back(seconds(t2, t3));
     t_polar.push_back(seconds(t3, t4));
     state.SetIterationTime(seconds(t0, t1));
@@ -244,17 +309,18 @@ void BM_Sample(benchmark::State& state, const Config& c) {
   }
   state.SetItemsProcessed(n_map);
   const double per_map = median(t_map) / per_batch;
-  const double per_area = median(t_area) / kBatch;
-  const double per_conc = median(t_conc) / kBatch;
-  const double per_polar = median(t_polar) / kBatch;
+  const double per_lean = median(t_lean) / kBatch;
   state.counters["ns"] = per_map * 1e9;
-  state.counters["area_ns"] = per_area * 1e9;
-  state.counters["ratio_to_area"] = per_map / per_area;
-  state.counters["ratio_to_concentric"] = per_map / per_conc;
-  state.counters["ratio_to_polar"] = per_map / per_polar;
+  state.counters["lean_ns"] = per_lean * 1e9;
+  state.counters["ratio_to_lean"] = per_map / per_lean;
+  state.counters["ratio_to_concentric"] = per_map / (median(t_conc) / kBatch);
+  state.counters["ratio_to_polar"] = per_map / (median(t_polar) / kBatch);
+  state.counters["bytes"] = sizeof(m);
   const double evals = mean_evaluations(m);
   if (evals > 0.0) state.counters["evals"] = evals;
-  if constexpr (std::is_same_v<A, Plain<ell::TabulatedMap>>) {
+  const double q_err = quadrant_error<A>(m, c);
+  if (q_err >= 0.0) state.counters["q_err"] = q_err;
+  if constexpr (std::is_same_v<A, Plain<ell::TabulatedMap>> || std::is_same_v<A, PublishedTab>) {
     long accepted = 0;
     for (const Point2& p : u)
       accepted += m.sample(p).valid;
@@ -272,14 +338,12 @@ void BM_Sample(benchmark::State& state, const Config& c) {
   }
 }
 
-// ---- set-up cost per shading point, interleaved with AreaSampler::make ----
-// The shading point is nudged per call (a fixed input could let the compiler or the branch
-// predictor learn more than a renderer's stream of points would allow).
+// ---- set-up cost per shading point, interleaved with the lean baseline's make ----
 template <class A>
 void BM_Setup(benchmark::State& state, const Config& c) {
   constexpr int kMakes = 32;
-  double sink = 0.0;
-  std::vector<double> t_map, t_area;
+  const ell::LeanDiskLight& light = lean_light(c);
+  std::vector<double> t_map, t_lean;
   long count = 0;
   const std::vector<Point2>& u = points();
   int offset = 0;
@@ -288,38 +352,34 @@ void BM_Setup(benchmark::State& state, const Config& c) {
     offset = (offset + kMakes) % kPoints;
     const auto t0 = Clock::now();
     for (int i = 0; i < kMakes; ++i) {
-      Config ci = c;
-      ci.o = c.o + 1e-3 * Vec3(p[i].x, p[i].y, 0.0);
-      const auto m = A::make(ci);
+      const auto m = A::make(nudged(c, p[i]), light);
       benchmark::DoNotOptimize(m);
     }
     const auto t1 = Clock::now();
     for (int i = 0; i < kMakes; ++i) {
-      Config ci = c;
-      ci.o = c.o + 1e-3 * Vec3(p[i].x, p[i].y, 0.0);
-      const auto m = AreaA::make(ci);
+      const auto m = LeanA::make(nudged(c, p[i]), light);
       benchmark::DoNotOptimize(m);
     }
     const auto t2 = Clock::now();
     count += kMakes;
     t_map.push_back(seconds(t0, t1));
-    t_area.push_back(seconds(t1, t2));
+    t_lean.push_back(seconds(t1, t2));
     state.SetIterationTime(seconds(t0, t1));
-    benchmark::DoNotOptimize(sink);
   }
   state.SetItemsProcessed(count);
-  const double m_map = median(t_map), m_area = median(t_area);
+  const double m_map = median(t_map), m_lean = median(t_lean);
   state.counters["ns"] = m_map / kMakes * 1e9;
-  state.counters["area_ns"] = m_area / kMakes * 1e9;
-  state.counters["ratio_to_area"] = m_map / m_area;
+  state.counters["lean_ns"] = m_lean / kMakes * 1e9;
+  state.counters["ratio_to_lean"] = m_map / m_lean;
 }
 
-// ---- one make + k samples, per sample, against the same for area sampling ----
+// ---- one make + k samples, per sample, against the same for the lean baseline ----
 template <class A>
 void BM_Amortized(benchmark::State& state, const Config& c, int k) {
   const int reps = std::max(1, 256 / k);  // shading points per timed batch
+  const ell::LeanDiskLight& light = lean_light(c);
   double sink = 0.0;
-  std::vector<double> t_map, t_area;
+  std::vector<double> t_map, t_lean;
   long samples = 0;
   int per_batch = reps * k;
   const std::vector<Point2>& u = points();
@@ -329,39 +389,42 @@ void BM_Amortized(benchmark::State& state, const Config& c, int k) {
     int off = offset;
     per_batch = 0;
     for (int r = 0; r < reps; ++r) {
-      Config ci = c;
-      ci.o = c.o + 1e-3 * Vec3(u[off].x, u[off].y, 0.0);
-      const auto m = A::make(ci);
+      const auto m = A::make(nudged(c, u[off]), light);
       per_batch += A::draw(m, u.data() + off, k, sink);
       off = (off + k) % kPoints;
     }
     const auto t1 = Clock::now();
     off = offset;
     for (int r = 0; r < reps; ++r) {
-      Config ci = c;
-      ci.o = c.o + 1e-3 * Vec3(u[off].x, u[off].y, 0.0);
-      const auto m = AreaA::make(ci);
-      AreaA::draw(m, u.data() + off, k, sink);
+      const auto m = LeanA::make(nudged(c, u[off]), light);
+      LeanA::draw(m, u.data() + off, k, sink);
       off = (off + k) % kPoints;
     }
     const auto t2 = Clock::now();
     offset = off;
     samples += per_batch;
     t_map.push_back(seconds(t0, t1));
-    t_area.push_back(seconds(t1, t2));
+    t_lean.push_back(seconds(t1, t2));
     state.SetIterationTime(seconds(t0, t1));
     benchmark::DoNotOptimize(sink);
   }
   state.SetItemsProcessed(samples);
   // radial4 draws k/4 solves of four (it is not registered for k < 4): count what was drawn.
   const double per_map = median(t_map) / std::max(1, per_batch);
-  const double per_area = median(t_area) / (reps * k);
+  const double per_lean = median(t_lean) / (reps * k);
   state.counters["ns"] = per_map * 1e9;
-  state.counters["ratio_to_area"] = per_map / per_area;
+  state.counters["ratio_to_lean"] = per_map / per_lean;
+}
+
+std::map<std::string, double>& state_bytes() {  // map name -> sizeof its per-shading-point state
+  static std::map<std::string, double> b;
+  return b;
 }
 
 template <class A>
 void register_map(const std::string& name) {
+  using M = decltype(A::make(configs()[0], lean_light(configs()[0])));
+  state_bytes()[name] = sizeof(M);
   for (const Config& c : configs()) {
     benchmark::RegisterBenchmark(("sample/" + name + "/" + c.name).c_str(),
                                  [&c](benchmark::State& s) { BM_Sample<A>(s, c); })
@@ -383,81 +446,122 @@ void register_map(const std::string& name) {
   }
 }
 
-// Worst ratio to area over the configurations of sample/<map>/*, against its target.
-void check_target(const disklab::bench::Results& values, const std::string& map, double target) {
+// ---- the summary ----
+using disklab::bench::Results;
+
+double ratio(const Results& values, const std::string& name, const char* key = "ratio_to_lean") {
+  const auto it = values.find(name);
+  return it == values.end() ? -1.0 : disklab::bench::counter(it->second, key);
+}
+
+// Worst over the configurations of value(config) (configurations that were not run are skipped),
+// printed against the target.
+template <class F>
+void check(const char* what, double target, F value) {
   double worst = -1.0;
   std::string where;
-  for (const auto& [name, v] : values) {
-    if (name.rfind("sample/" + map + "/", 0) != 0) continue;
-    const double ratio = disklab::bench::counter(v, "ratio_to_area");
-    if (ratio > worst) {
-      worst = ratio;
-      where = name;
+  for (const Config& c : configs()) {
+    const double v = value(std::string(c.name));
+    if (v < 0.0) continue;
+    if (v > worst) {
+      worst = v;
+      where = c.name;
     }
   }
-  if (worst < 0) {
-    std::printf("  %-12s not run\n", map.c_str());
+  if (worst < 0.0) {
+    std::printf("  %-58s not run\n", what);
     return;
   }
-  std::printf("  %-12s worst %.2fx (%s), target <= %.1fx: %s\n", map.c_str(), worst, where.c_str(),
+  std::printf("  %-58s worst %6.2fx (%s), target <= %.2gx: %s\n", what, worst, where.c_str(),
               target, worst <= target ? "met" : "MISSED");
 }
 
-// After the console table: the median (or only) ratios per map and configuration, and the
-// issue's targets.
-void print_summary(const disklab::bench::Results& values) {
+// The quotient of two maps' ratios to the lean baseline in the same run, or -1.
+auto relative(const Results& v, const std::string& kind, const std::string& map,
+              const std::string& base, const std::string& suffix = "") {
+  return [&v, kind, map, base, suffix](const std::string& cfg) {
+    const double a = ratio(v, kind + "/" + map + "/" + cfg + suffix);
+    const double b = ratio(v, kind + "/" + base + "/" + cfg + suffix);
+    return a > 0.0 && b > 0.0 ? a / b : -1.0;
+  };
+}
+auto absolute(const Results& v, const std::string& kind, const std::string& map,
+              const std::string& suffix = "") {
+  return [&v, kind, map, suffix](const std::string& cfg) {
+    return ratio(v, kind + "/" + map + "/" + cfg + suffix);
+  };
+}
+
+void print_summary(const Results& values) {
   std::printf(
-      "\nMedian ratios (same run). sample: per direction; setup: per make;\n"
-      "amortized/k: (make + k samples) / k, both against area sampling.\n");
-  std::printf("%-34s %9s %9s %9s %9s %7s\n", "benchmark", "ns", "x area", "x concen", "x polar",
-              "evals");
+      "\nMedian ratios (same run) to the lean area baseline (area_lean.h). sample: per direction;\n"
+      "setup: per make; amortized/k: (make + k samples) / k, against the same for the baseline.\n");
+  std::printf("%-44s %9s %8s %9s %9s %7s %9s\n", "benchmark", "ns", "x lean", "x concen", "x polar",
+              "evals", "q_err");
   for (const auto& [name, v] : values) {
     const auto get = [&v](const char* k) { return disklab::bench::counter(v, k); };
-    std::printf("%-34s %9.1f %9.2f", name.c_str(), get("ns"), get("ratio_to_area"));
+    std::printf("%-44s %9.1f %8.2f", name.c_str(), get("ns"), get("ratio_to_lean"));
     if (get("ratio_to_concentric") >= 0)
       std::printf(" %9.1f %9.1f", get("ratio_to_concentric"), get("ratio_to_polar"));
     else
       std::printf(" %9s %9s", "", "");
-    if (get("evals") >= 0) std::printf(" %7.2f", get("evals"));
+    if (get("evals") >= 0)
+      std::printf(" %7.2f", get("evals"));
+    else
+      std::printf(" %7s", "");
+    if (get("q_err") >= 0) std::printf(" %9.1e", get("q_err"));
     std::printf("\n");
   }
-  std::printf("\nTargets (worst configuration of sample/<map>/*, ratio to area):\n");
-  check_target(values, "radial", kTargetRadial);
-  check_target(values, "radial-fast", kTargetRadialFast);
-  check_target(values, "tabulated", kTargetTabulated);
-  // projected against the exact radial map (both as ratios to area in this run).
-  for (const char* kind : {"sample", "amortized"}) {
-    double worst = -1.0;
-    std::string where;
-    for (const auto& [name, v] : values) {
-      const std::string prefix = std::string(kind) + "/projected/";
-      if (name.rfind(prefix, 0) != 0) continue;
-      const std::string radial = std::string(kind) + "/radial/" + name.substr(prefix.size());
-      const auto it = values.find(radial);
-      if (it == values.end()) continue;
-      const double ratio = disklab::bench::counter(v, "ratio_to_area") /
-                           disklab::bench::counter(it->second, "ratio_to_area");
-      if (ratio > worst) {
-        worst = ratio;
-        where = name;
-      }
-    }
-    if (worst >= 0)
-      std::printf("  projected / radial (%s): worst %.2fx (%s), target <= 3x: %s\n", kind, worst,
-                  where.c_str(), worst <= 3.0 ? "met" : "MISSED");
-  }
+
+  std::printf("\nBytes per shading point (sizeof the state `make` returns; none allocates):\n");
+  for (const auto& [name, bytes] : state_bytes())
+    std::printf("  %-28s %6.0f\n", name.c_str(), bytes);
+  std::printf(
+      "Shared tables (built once per process): tabulated/radial-fast %zu bytes, "
+      "published-tabulated %zu bytes\n",
+      ell::RadialTable::shared().phi.size() * sizeof(double),
+      pub::PublishedTable::shared().bytes());
+
+  std::printf("\nTargets (same-run ratios; worst configuration):\n");
+  const Results& v = values;
+  std::printf(" issue 16, to the lean baseline:\n");
+  check("radial, per sample over 256 (amortized/256)", 3.0,
+        absolute(v, "amortized", "radial", "/256"));
+  check("radial-fast, per sample over 256", 2.0, absolute(v, "amortized", "radial-fast", "/256"));
+  check("radial, per sample over 16", 4.0, absolute(v, "amortized", "radial", "/16"));
+  check("radial, set-up + 1 sample (amortized/1)", 10.0, absolute(v, "amortized", "radial", "/1"));
+  check("radial / published-radial-double, set-up + 1", 1.0,
+        relative(v, "amortized", "radial", "published-radial-double", "/1"));
+  check("radial / published-radial-default, set-up + 1", 1.0,
+        relative(v, "amortized", "radial", "published-radial-default", "/1"));
+  check("lean baseline set-up / its sample (setup/lean-area)", 1.0, [&v](const std::string& cfg) {
+    const double s = ratio(v, "setup/lean-area/" + cfg, "ns");
+    const double x = ratio(v, "sample/lean-area/" + cfg, "ns");
+    return s > 0.0 && x > 0.0 ? s / x : -1.0;
+  });
+  std::printf(" issue 5, to disklab's area sampler (quotients of the ratios above):\n");
+  check("radial / area, per sample", 6.0, relative(v, "sample", "radial", "area"));
+  check("radial-fast / area, per sample", 2.0, relative(v, "sample", "radial-fast", "area"));
+  check("tabulated / area, per sample", 1.3, relative(v, "sample", "tabulated", "area"));
+  std::printf(" issue 19:\n");
+  check("projected / radial, per sample", 3.0, relative(v, "sample", "projected", "radial"));
+  check("projected / radial, amortized/256", 3.0,
+        relative(v, "amortized", "projected", "radial", "/256"));
   std::printf(
       "Anchor (issue 5): the authors' Newton sample costs ~40-220x a polar disk sample;\n"
-      "compare the 'x polar' column of sample/radial, sample/parallel.\n");
+      "compare the 'x polar' column of sample/published-radial-*, sample/radial.\n");
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Built before any timing: the shared table behind tabulated and radial-fast, and the points.
+  // Built before any timing: the shared tables, the lean lights and the points.
   (void)ell::RadialTable::shared();
+  (void)pub::PublishedTable::shared();
+  (void)lean_light(configs()[0]);
   (void)points();
-  register_map<AreaA>("area");
+  register_map<LeanA>("lean-area");
+  register_map<Plain<ell::AreaSampler>>("area");
   register_map<GamitoAdapter>("gamito");
   register_map<Plain<ell::ParallelMap>>("parallel");
   register_map<Plain<ell::RadialMap>>("radial");
@@ -466,5 +570,8 @@ int main(int argc, char** argv) {
   register_map<Plain<ell::TabulatedMap>>("tabulated");
   register_map<Plain<ell::RadialFastMap>>("radial-fast");
   register_map<ProjectedAdapter>("projected");
+  register_map<PublishedDouble>("published-radial-double");
+  register_map<PublishedDefault>("published-radial-default");
+  register_map<PublishedTab>("published-tabulated");
   return disklab::bench::run_benchmarks(argc, argv, print_summary);
 }
