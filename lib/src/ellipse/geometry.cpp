@@ -46,6 +46,9 @@ double height_dot(const Vec3& p, const Vec3& q, const Vec3& n) {
 Vec3 scaled_normal(const Vec3& n) {
   const double m = n.cwiseAbs().maxCoeff();
   if (!(m > 0.0) || !std::isfinite(m)) return n;
+  // Ordinary lengths: scaling by a power of two would change no number derived from n (see
+  // above), so it is skipped (ilogb and ldexp are library calls on the set-up's path).
+  if (m >= 0x1p-500 && m <= 0x1p500) return n;
   const int k = std::ilogb(m);
   return {std::ldexp(n.x(), -k), std::ldexp(n.y(), -k), std::ldexp(n.z(), -k)};
 }
@@ -124,7 +127,7 @@ SphericalEllipse make_spherical_ellipse(const Disk& disk, const Vec3& o) {
   return spherical_ellipse(disk, o);
 }
 
-SphericalEllipse spherical_ellipse(const Disk& disk, const Vec3& o) noexcept {
+SphericalEllipse spherical_ellipse_shape(const Disk& disk, const Vec3& o) noexcept {
   if (!valid_disk_input(disk, o)) return {};
   const Vec3 normal = scaled_normal(disk.normal);
   const double nn = normal.norm();
@@ -195,14 +198,38 @@ SphericalEllipse spherical_ellipse(const Disk& disk, const Vec3& o) noexcept {
     se.radial_split = std::atan2(std::sqrt(at2 - kSplit), std::sqrt(kSplit - bt2));
   }
   se.empty = false;
+  return se;
+}
+
+namespace {
+void check_totals(SphericalEllipse& se) {
+  if (!(se.omega > 0.0) || !std::isfinite(se.omega) || !(se.quadrant > 0.0) ||
+      !std::isfinite(se.quadrant)) {
+    se.empty = true;
+    se.omega = se.quadrant = 0.0;
+  }
+}
+}  // namespace
+
+void compute_totals(SphericalEllipse& se) noexcept {
+  if (se.empty) return;
   se.quadrant = radial_sector_parametric(se, math::kHalfPi);
   // A disk seen from one side never covers more than the hemisphere; rounding near it can
   // exceed 2 pi by an ulp.
   se.omega = std::min(solid_angle_stable(se), math::kTwoPi);
-  if (!(se.omega > 0.0) || !std::isfinite(se.omega) || !(se.quadrant > 0.0)) {
-    se.empty = true;
-    se.omega = se.quadrant = 0.0;
-  }
+  check_totals(se);
+}
+
+void set_totals(SphericalEllipse& se, double quadrant) noexcept {
+  if (se.empty) return;
+  se.quadrant = quadrant;
+  se.omega = std::min(4.0 * quadrant, math::kTwoPi);
+  check_totals(se);
+}
+
+SphericalEllipse spherical_ellipse(const Disk& disk, const Vec3& o) noexcept {
+  SphericalEllipse se = spherical_ellipse_shape(disk, o);
+  compute_totals(se);
   return se;
 }
 

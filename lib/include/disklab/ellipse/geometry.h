@@ -133,6 +133,15 @@ SphericalEllipse make_spherical_ellipse(const Disk& disk, const Vec3& o);
 // The same without exceptions: invalid input also gives an empty ellipse (for the samplers'
 // set-up, which renderers may build with -fno-exceptions).
 SphericalEllipse spherical_ellipse(const Disk& disk, const Vec3& o) noexcept;
+// The same without the totals (omega and quadrant stay 0, `empty` false when o sees the disk):
+// for samplers that obtain them more cheaply (the radial maps' series). Complete it with
+// set_totals or compute_totals before anything reads omega or quadrant.
+SphericalEllipse spherical_ellipse_shape(const Disk& disk, const Vec3& o) noexcept;
+// The totals of a spherical_ellipse_shape result by solid_angle.h (what spherical_ellipse does).
+void compute_totals(SphericalEllipse& se) noexcept;
+// The totals from a quadrant Omega_r(pi/2) known otherwise: omega = 4 quadrant (at most 2 pi).
+// Either makes the ellipse empty when the totals are not positive and finite.
+void set_totals(SphericalEllipse& se, double quadrant) noexcept;
 // Whether make_spherical_ellipse accepts the input (finite, non-zero normal, radius >= 0).
 bool valid_disk_input(const Disk& disk, const Vec3& o) noexcept;
 

@@ -42,12 +42,18 @@ struct MapGeometry : SphericalEllipse {
   // Never throws, never allocates: invalid input (non-finite, zero normal, negative radius) and
   // what sees nothing give an empty geometry, which every sampler turns into "no sample".
   static MapGeometry make(const Disk& disk, const Vec3& o) noexcept {
+    MapGeometry g = make_shape(disk, o);
+    g.finish_totals(0.0);
+    return g;
+  }
+  // The same in two steps, for samplers that know the quadrant more cheaply than solid_angle.h:
+  // make_shape leaves omega and quadrant at 0 (spherical_ellipse_shape), finish_totals(q) sets
+  // them from a quadrant q > 0 (omega = 4 q) or, for q <= 0, computes them as make does.
+  static MapGeometry make_shape(const Disk& disk, const Vec3& o) noexcept {
     MapGeometry g;
-    static_cast<SphericalEllipse&>(g) = spherical_ellipse(disk, o);
+    static_cast<SphericalEllipse&>(g) = spherical_ellipse_shape(disk, o);
     if (g.empty) return g;
-    // A solid angle below the smallest normal double (seen from ~1e150 radii away) has a density
-    // 1/Omega that overflows: no sampler can report it, so there is nothing to sample.
-    if (!(g.b > 0.0) || !(g.omega >= std::numeric_limits<double>::min()) || !(g.quadrant > 0.0)) {
+    if (!(g.b > 0.0)) {
       g.empty = true;
       return g;
     }
@@ -56,6 +62,16 @@ struct MapGeometry : SphericalEllipse {
     g.a2_minus_b2 = std::max(0.0, g.a * g.a <= g.one_minus_b2 ? (g.a - g.b) * (g.a + g.b)
                                                               : g.one_minus_b2 - g.one_minus_a2);
     return g;
+  }
+  void finish_totals(double quadrant_known) noexcept {
+    if (empty) return;
+    if (quadrant_known > 0.0)
+      set_totals(*this, quadrant_known);
+    else
+      compute_totals(*this);
+    // A solid angle below the smallest normal double (seen from ~1e150 radii away) has a density
+    // 1/Omega that overflows: no sampler can report it, so there is nothing to sample.
+    if (!(omega >= std::numeric_limits<double>::min())) empty = true;
   }
 
   // h_r (eq. 17) and 1 - h_r, the radial map's segment, in the two angles the maps use:

@@ -80,8 +80,7 @@ struct RadialQuadrant {
   Angle solve(double t, int* iterations = nullptr, double s0 = -1.0) const {
     const double s = (s0 >= 0.0 && s0 <= math::kHalfPi) ? s0 : t * math::kHalfPi;
     return solve_from(t, {s, std::cos(s), std::sin(s)}, iterations);
-  }
-  // The same from a start with its cosine and sine already known (radial-fast's seed).
+  }  // The same from a start with its cosine and sine already known (radial-fast's seed).
   Angle solve_from(double t, Angle start, int* iterations = nullptr) const {
     if (!use_series()) {
       const double s = solve_s(t, iterations, start.s);
@@ -177,9 +176,16 @@ struct RadialMap {
 
   static RadialMap make(const Disk& disk, const Vec3& o) noexcept {
     RadialMap m;
-    m.g = MapGeometry::make(disk, o);
-    m.uniform_pdf = m.g.empty ? 0.0 : 1.0 / m.g.omega;
+    m.g = MapGeometry::make_shape(disk, o);
     m.series = RadialSeries::make(m.g);
+    // The series' quadrant a_0 pi / 2 is the total the root solves use; solid_angle.h's only
+    // where there is no series.
+    m.g.finish_totals(m.series.n > 0 ? m.series.quadrant : 0.0);
+    if (m.g.empty) {
+      m.series = {};
+      return m;
+    }
+    m.uniform_pdf = 1.0 / m.g.omega;
     return m;
   }
   bool valid() const { return !g.empty; }

@@ -3,11 +3,26 @@
 // Guillén et al. 2017): the hot path of the exact maps, and the seed of radial-fast.
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 #include "disklab/ellipse/map_geometry.h"
 #include "disklab/math/constants.h"
 
 namespace disklab::ellipse {
+
+namespace detail {
+// The series' DCT-I kernel cos(j k pi / N) for N = 8, 16, 32, 64 is tabulated in rows
+// k = 0..min(N, max_row) of N + 1 entries: only the coefficients a sampler can keep are computed.
+constexpr int series_kernel_rows(int n, int max_row) {
+  return (n < max_row ? n : max_row) + 1;
+}
+constexpr std::size_t series_kernel_offset(int n, int max_row) {
+  std::size_t o = 0;
+  for (int m = 8; m < n; m *= 2)
+    o += static_cast<std::size_t>(series_kernel_rows(m, max_row)) * static_cast<std::size_t>(m + 1);
+  return o;
+}
+}  // namespace detail
 
 // A parametric angle s of the radial maps with its cosine and sine (computed once, used twice).
 struct ParametricAngle {
@@ -89,45 +104,50 @@ struct RadialSeries {
     }
     // DCT-I: a_k = (2/n) sum'' dg_j cos(j k pi / n); a_0 and a_n halved once more. For k >= 1
     // the constant g0 contributes sum'' cos(j k pi / n) = 0.
-    double coef[kMaxDegree + 1];
-    for (int k = 0; k <= n; ++k) {
+    const double* kernel = tab.kernel + kernel_offset(n);
+    auto coefficient = [&](int k) {
       double sum = 0.5 * (dg[0] + ((k & 1) ? -dg[n] : dg[n]));
-      // cos(j k pi / n) from the table at index (j k mod 2n) * step, kept by increments (no
-      // integer division in the O(n^2) loop).
+      const double* row = kernel + static_cast<std::size_t>(k) * static_cast<std::size_t>(n + 1);
       // Four partial sums: the loop is bound by the latency of the additions, not their count.
-      const int wrap = 2 * kMaxDegree, inc = (k * step) % wrap;
-      int idx = 0;
       double part[4] = {0.0, 0.0, 0.0, 0.0};
-      for (int j = 1; j < n; ++j) {
-        idx += inc;
-        if (idx >= wrap) idx -= wrap;
-        part[j & 3] += dg[j] * tab.cos_pi[idx];
-      }
+      for (int j = 1; j < n; ++j)
+        part[j & 3] += dg[j] * row[j];
       sum += (part[0] + part[1]) + (part[2] + part[3]);
-      coef[k] = sum * (2.0 / n);
+      return sum * (2.0 / n) * (k == n ? 0.5 : 1.0);
+    };
+    const double a0 = g0 + 0.5 * coefficient(0);
+    const double quadrant = a0 * math::kHalfPi;
+    // Terms in increasing k, stopping at the first two whose dropped tail is negligible: the
+    // coefficients decay at least like rho^-k (one branch point), so after b_k everything sums
+    // to at most |b_k| / (1 - 1/rho); below kSeriesDrop * quadrant for b_k and b_k+1 (two, so
+    // that a coefficient passing near zero cannot end the series early), b_k and all later terms
+    // are dropped. Only the terms kept are computed (the DCT is the cost of the set-up).
+    const double tail_factor = 1.0 / (1.0 - std::exp(-log_rho));
+    const double drop = kSeriesDrop * quadrant;
+    auto negligible = [&](double b) { return std::abs(b) * tail_factor <= drop; };
+    double bk[kCapacity + 2];
+    int kept = 0;
+    bool ended = false;
+    for (int k = 1; k <= n && k <= kCapacity + 2; ++k) {
+      bk[k - 1] = coefficient(k) / (2.0 * k);
+      if (!std::isfinite(bk[k - 1])) return out;
+      if (k >= 2 && negligible(bk[k - 2]) && negligible(bk[k - 1])) {
+        kept = k - 2;
+        ended = true;
+        break;
+      }
     }
-    coef[0] = g0 + 0.5 * coef[0];
-    coef[n] *= 0.5;
-    double bk[kMaxDegree + 1];
-    for (int k = 1; k <= n; ++k)
-      bk[k] = coef[k] / (2.0 * k);
-    const double quadrant = coef[0] * math::kHalfPi;
-    // Drop the trailing terms whose sum stays below kSeriesDrop * quadrant (|sin| <= 1 bounds
-    // their contribution): N was sized for the worst decay, most ellipses need fewer terms.
-    double tail = 0.0;
-    while (n > 1 && tail + std::abs(bk[n]) <= kSeriesDrop * quadrant) {
-      tail += std::abs(bk[n]);
-      --n;
+    if (!ended) {
+      if (n > kCapacity) return out;  // more terms than a sampler keeps
+      kept = n;                       // the full degree (sized for 2^-60) is kept
     }
-    if (n > kCapacity) return out;
-    for (int k = 1; k <= n; ++k)
-      if (!std::isfinite(bk[k])) return out;
+    n = std::max(kept, 1);
     if (!(quadrant > 0.0) || !std::isfinite(quadrant)) return out;
     out.n = n;
-    out.a0 = coef[0];
+    out.a0 = a0;
     out.quadrant = quadrant;
     for (int k = 1; k <= n; ++k)
-      out.b[k - 1] = bk[k];
+      out.b[k - 1] = bk[k - 1];
     return out;
   }
 
@@ -163,16 +183,21 @@ struct RadialSeries {
     n_seed = count;
     return true;
   }
-  // The seed for t in [0, 1] with its cosine and sine, from one sincos of tau: s = tau + delta,
-  // cos and sin of s by the angle sum with delta's own cosine and sine, Taylor polynomials while
-  // |delta| <= kSmallDelta (degrees 8 and 9: remainders below 3e-20 there).
+  // The seed for t in [0, 1] with its cosine and sine, from one sincos of tau: s = tau + delta
+  // (shifted).
   static constexpr double kSmallDelta = 0.05;
   ParametricAngle seed(double t) const {
     const double tau = t * math::kHalfPi;
     const double ct = std::cos(tau), st = std::sin(tau);
     if (n_seed == 0) return {tau, ct, st};
-    const double delta = sine_sum(b + n, n_seed, (ct - st) * (ct + st), 2.0 * st * ct);
-    const double s = tau + delta;
+    return shifted({tau, ct, st}, sine_sum(b + n, n_seed, (ct - st) * (ct + st), 2.0 * st * ct));
+  }
+
+  // The angle base.s + delta with its cosine and sine from base's by the angle sum, with Taylor
+  // polynomials for delta's own while |delta| <= kSmallDelta (degrees 8 and 9: remainders below
+  // 3e-20 there).
+  static ParametricAngle shifted(ParametricAngle base, double delta) {
+    const double s = base.s + delta;
     if (std::abs(delta) > kSmallDelta) return {s, std::cos(s), std::sin(s)};
     const double d2 = delta * delta;
     const double cd =
@@ -180,25 +205,33 @@ struct RadialSeries {
     const double sd =
         delta *
         (1.0 - d2 * (1.0 / 6.0 - d2 * (1.0 / 120.0 - d2 * (1.0 / 5040.0 - d2 * (1.0 / 362880.0)))));
-    return {s, ct * cd - st * sd, st * cd + ct * sd};
+    return {s, base.cs * cd - base.ss * sd, base.ss * cd + base.cs * sd};
   }
 
  private:
+  static constexpr int kernel_rows(int n) { return detail::series_kernel_rows(n, kCapacity + 2); }
+  static constexpr std::size_t kernel_offset(int n) {
+    return detail::series_kernel_offset(n, kCapacity + 2);
+  }
   struct Tables {
-    double cos_pi[2 * kMaxDegree];     // cos(m pi / 64), m = 0..127
     double cos2_half[kMaxDegree + 1];  // cos^2(j pi / 128), j = 0..64
     double sin2_half[kMaxDegree + 1];  // sin^2(j pi / 128)
+    double kernel[detail::series_kernel_offset(2 * kMaxDegree, kCapacity + 2)];
   };
   static const Tables& tables() {
     static const Tables t = [] {
       Tables r;
-      for (int m = 0; m < 2 * kMaxDegree; ++m)
-        r.cos_pi[m] = std::cos(m * math::kPi / kMaxDegree);
       for (int j = 0; j <= kMaxDegree; ++j) {
         const double c = std::cos(j * math::kHalfPi / kMaxDegree);
         const double sn = std::sin(j * math::kHalfPi / kMaxDegree);
         r.cos2_half[j] = c * c;
         r.sin2_half[j] = sn * sn;
+      }
+      for (int n = 8; n <= kMaxDegree; n *= 2) {
+        double* k_rows = r.kernel + kernel_offset(n);
+        for (int k = 0; k < kernel_rows(n); ++k)
+          for (int j = 0; j <= n; ++j)  // (j k mod 2n) keeps the argument in [0, 2 pi)
+            k_rows[k * (n + 1) + j] = std::cos((j * k % (2 * n)) * math::kPi / n);
       }
       return r;
     }();
