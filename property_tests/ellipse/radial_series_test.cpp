@@ -43,6 +43,12 @@ void compare(const Vec3& c, const Vec3& n, double r, const Vec3& o, double dista
     return;
   }
   EXPECT_NEAR(series.quadrant, g.quadrant, kSeriesTol * g.quadrant) << label;
+  // The radial maps take their total from the series (omega = 4 quadrant, radial.h): it must be
+  // the R_J closed form's Omega (solid_angle_stable) to the same accuracy.
+  const auto map = ellipse::RadialMap::make(ellipse::Disk{c, n, r, false}, o);
+  ASSERT_TRUE(map.valid()) << label;
+  EXPECT_NEAR(map.g.omega, g.omega, kSeriesTol * g.omega) << label;
+  EXPECT_EQ(map.g.quadrant, series.quadrant) << label;
   for (int i = 0; i <= kGrid; ++i) {
     const double s = math::kHalfPi * i / kGrid;
     const double value = series.omega(s, std::cos(s), std::sin(s));
