@@ -1,5 +1,6 @@
 // Best candidates (Mitchell 1991): the point of the method is a large minimum distance. At equal
-// N its minimum (toroidal) distance must clearly exceed that of uniform random points.
+// N its minimum (toroidal) distance must clearly exceed that of uniform random points. pmj02bn's
+// candidates order pmj02's construction: between its nets it must spread points farther than pmj02.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -55,6 +56,22 @@ TEST(BestCandidate, MinimumDistanceWellAboveRandom) {
     EXPECT_GT(worst_bc, test::seq::kBestCandidateHexFraction * hex)
         << "N=" << n << ": min distance " << worst_bc << " below "
         << test::seq::kBestCandidateHexFraction << " of the hexagonal spacing " << hex;
+  }
+}
+
+TEST(BestCandidate, Pmj02BlueNoiseOrderSpreadsPointsFartherThanPmj02) {
+  for (uint32_t n : {80u, 320u, 1280u}) {
+    double mean_bn = 0.0, mean_pmj = 0.0;
+    for (int s = 0; s < test::seq::kBlueNoiseOrderSeeds; ++s) {
+      const auto seed = static_cast<uint64_t>(s);
+      mean_bn += min_toroidal_distance(prefix(Pmj02BlueNoise(seed, 2048), n));
+      mean_pmj += min_toroidal_distance(prefix(Pmj02(seed, 2048), n));
+    }
+    const double ratio = mean_bn / mean_pmj;
+    RecordProperty("ratio_N" + std::to_string(n), std::to_string(ratio));
+    EXPECT_GT(ratio, test::seq::kBlueNoiseOrderGain)
+        << "N=" << n << ": mean min distance pmj02bn " << mean_bn / test::seq::kBlueNoiseOrderSeeds
+        << " vs pmj02 " << mean_pmj / test::seq::kBlueNoiseOrderSeeds << "; ratio " << ratio;
   }
 }
 

@@ -57,21 +57,22 @@ class BestCandidate : public TabulatedSequence {
 
 // Progressive multi-jittered (0,2) sequence (Christensen, Kensler and Kilpatrick 2018), built with
 // the stochastic construction of Helmer, Christensen and Kensler 2021 ("Stochastic Generation of
-// (t, s) Sample Sequences") in O(1) per point. Point i with 2^n <= i < 2^(n+1) copies
-// the top n binary digits of x from point i xor 2^n and those of y from point i xor d_n (d_n in
+// (t, s) Sample Sequences") in O(1) per point. Point i with 2^n <= i < 2^(n+1) copies the top n
+// binary digits of x from point i xor 2^n and those of y from point i xor d_n (d_n in
 // [2^n, 2^(n+1)): the index whose Sobol' y starts with n zeros), takes the complement of that
-// point's digit n+1, and random digits below. Every run is a nested uniform (Owen) scrambling of
-// the Sobol' (0,2) sequence, so every aligned block of 2^m points is a (0,m,2)-net: prefixes,
-// their halves and smaller blocks alike. pmj's sub-square rule (Sec. 3) follows: at 2 * 4^n points
-// every square of side 2^-n holds two points in diagonally opposite sub-squares, at 3 * 4^n three
-// in distinct ones.
+// point's digit n+1, and draws the digits below. In Sobol' (0,2) those partners share exactly
+// these digits with point i, and the drawn digits sit where a nested uniform (Owen) scrambling
+// tree is visited first, so every run is an Owen-scrambled Sobol' sequence: every aligned block
+// of 2^m points is a (0,m,2)-net (prefixes, their halves and smaller blocks alike). pmj's
+// sub-square rule (Christensen et al. 2018, Sec. 3) follows: at 2 * 4^n points every square of
+// side 2^-n holds two points in diagonally opposite sub-squares, at 3 * 4^n three in distinct ones.
 //
 // pmj02bn (`candidates` > 1): the points of that construction (from a stream of their own) in a
 // blue-noise order: level [2^n, 2^(n+1)) half by half (each half an aligned block, so a net), and
 // within a half the point farthest (toroidal distance) from all earlier points among `candidates`
 // drawn from the half's remaining ones. Prefixes 2^m, their halves and the sub-square rule hold
-// as for pmj02; unlike the 2018 blue-noise variant, which chose among free strata, the set at
-// 2^m is a scrambled Sobol' net and blue noise shapes the order in which it is reached.
+// as for pmj02. Unlike the 2018 blue-noise variant, which chose among free strata, the sets at
+// 2^m and 3 * 2^(m-1) points are the construction's nets: blue noise shapes the order in between.
 class Pmj02 : public TabulatedSequence {
  public:
   static constexpr int kBlueNoiseCandidates = 10;
