@@ -1,8 +1,8 @@
 // (0,2)-net property (Christensen 2018, Sec. 2; DESIGN.md "Randomizations and nets"): every
 // power-of-two prefix up to 2^16 and every aligned power-of-two block of Sobol' (unrandomized,
 // xor- and Owen-scrambled) and pmj02 puts exactly one point in each elementary interval; so do
-// pmj02bn's prefixes, their halves and the halves of each level. pmj's sub-square rule holds for
-// both. Cranley-Patterson rotation breaks the net property: asserted, as the documented fact it is.
+// pmj02bn's prefixes and their second halves. pmj's sub-square rule holds for both.
+// Cranley-Patterson rotation breaks the net property: asserted, as the documented fact it is.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -83,9 +83,11 @@ TEST(Net, OwenScrambledSobolKeepsNets) {
                                "sobol-owen seed " + std::to_string(seed));
 }
 
-// pmj02 (Christensen et al. 2018) guarantees the power-of-two prefixes; the second half of each
-// prefix, [2^(m-1), 2^m), is then a (0,m-1,2)-net too (in every elementary interval of area
-// 2^-(m-1) the first half left exactly one of two sub-intervals free).
+// pmj02bn's stratum search (Christensen et al. 2018) guarantees the power-of-two prefixes; the
+// second half of each prefix, [2^(m-1), 2^m), is then a (0,m-1,2)-net too (in every elementary
+// interval of area 2^-(m-1) the first half left exactly one of two sub-intervals free). Smaller
+// aligned blocks are not constrained by the 2018 algorithm (see tabulated.h), so they are not
+// tested for it.
 void expect_prefixes_and_halves_are_nets(const std::vector<FixedPoint2>& points, int max_log2,
                                          const std::string& what) {
   for (int m = 0; m <= max_log2; ++m) {
@@ -142,19 +144,15 @@ TEST(Net, Pmj02FollowsTheSubSquareRule) {
                            "pmj02 seed " + std::to_string(seed));
 }
 
-// pmj02bn reorders each half of a level [2^n, 2^(n+1)) of the construction: prefixes, their
-// halves and the levels' halves are nets, and the sub-square rule holds.
+// pmj02bn (the 2018 stratum search with best candidates): prefixes and their halves are nets, the
+// sub-square rule held for every candidate of these seeds, and so it holds for the points.
 TEST(Net, Pmj02BlueNoiseIsAProgressiveNet) {
   for (uint64_t seed : {uint64_t{3}, uint64_t{77}}) {
     const std::string what = "pmj02bn seed " + std::to_string(seed);
-    const std::vector<FixedPoint2> points = first_points(Pmj02BlueNoise(seed, kCount), kCount);
+    const Pmj02BlueNoise gen(seed, kCount);
+    const std::vector<FixedPoint2> points = first_points(gen, kCount);
     expect_prefixes_and_halves_are_nets(points, kMaxLog2, what);
-    for (int m = 2; m <= kMaxLog2; ++m)
-      for (std::size_t start : {std::size_t{2} << (m - 2), std::size_t{3} << (m - 2)}) {
-        std::string why;
-        EXPECT_TRUE(is_02_net(points, start, m - 2, &why))
-            << what << ": half of level [2^" << m - 1 << ", 2^" << m << "): " << why;
-      }
+    EXPECT_EQ(gen.rule_fallbacks(), 0u) << what;
     expect_sub_square_rule(points, what);
   }
 }

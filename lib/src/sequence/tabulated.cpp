@@ -119,45 +119,200 @@ void generate_02(std::vector<FixedPoint2>& s, Pcg32& rng) {
   }
 }
 
-// pmj02bn's order (see Pmj02 in tabulated.h): the points of `s` level by level, each half of a
-// level [2^n, 2^(n+1)) in turn (the first one drawn at random), and within a half, greedily, the
-// point farthest from all earlier ones among `candidates` drawn from those not yet taken.
-void order_blue_noise(const std::vector<FixedPoint2>& s, std::vector<FixedPoint2>& out,
-                      int candidates, Pcg32& rng) {
-  TorusGrid grid(out.size());
-  auto take = [&](std::size_t o, FixedPoint2 p) {
-    out[o] = p;
-    grid.insert(to_unit(p.x), to_unit(p.y));
-  };
-  for (std::size_t i = 0; i < std::min<std::size_t>(2, s.size()); ++i)
-    take(i, s[i]);
-  std::vector<uint32_t> pool;
-  std::size_t o = 2;
-  for (int n = 1; (std::size_t{1} << n) < s.size(); ++n) {
-    const uint32_t first = 1u << n, half = first / 2;
-    const uint32_t lead = rng.next_u32() >> 31;
-    for (uint32_t h : {lead, 1u - lead}) {
-      pool.resize(half);
-      for (uint32_t k = 0; k < half; ++k)
-        pool[k] = first + h * half + k;
-      for (uint32_t left = half; left > 0; --left) {
-        uint32_t best = 0;
-        double best_d2 = -1.0;
-        for (int c = 0; c < candidates && left > 1; ++c) {
-          const auto k = static_cast<uint32_t>((uint64_t{rng.next_u32()} * left) >> 32u);
-          const FixedPoint2 p = s[pool[k]];
-          const double d2 = grid.nearest_distance2(to_unit(p.x), to_unit(p.y));
-          if (d2 > best_d2) {
-            best_d2 = d2;
-            best = k;
-          }
-        }
-        take(o++, s[pool[best]]);
-        pool[best] = pool[left - 1];
+// Top `digits` binary digits of a 32-bit fraction (digits in 0..32).
+uint32_t top(uint32_t v, int digits) {
+  return digits == 0 ? 0u : static_cast<uint32_t>(static_cast<uint64_t>(v) >> (32 - digits));
+}
+
+// Random low bits below the top `digits`: uniform jitter inside the finest stratum.
+uint32_t with_jitter(uint32_t stratum, int digits, Pcg32& rng) {
+  const uint32_t r = rng.next_u32();
+  if (digits == 0) return r;
+  if (digits >= 32) return stratum;
+  return (stratum << (32 - digits)) | (r >> digits);
+}
+
+// pmj02bn's builder: the stratum search of Christensen et al. 2018 (Sec. 5) with best candidates
+// (Sec. 6); see Pmj02 in tabulated.h. Only the prefix condition is imposed: point i at level M
+// avoids the elementary intervals used by points 0..i-1. Also requiring every aligned block to be
+// a net makes this greedy random placement run into dead ends (tried: at every even level, and
+// level 12 never completes); pmj02 gets that property from the xor construction above instead.
+class Pmj02Builder {
+ public:
+  Pmj02Builder(uint64_t seed, std::vector<FixedPoint2>& points, int candidates)
+      : rng_(derive_seed(seed, 0x93a0)),
+        pts_(points),
+        candidates_(candidates),
+        grid_(points.size()) {}
+
+  uint32_t build() {
+    const auto n = static_cast<uint32_t>(pts_.size());
+    if (n == 0) return 0;
+    pts_[0] = {rng_.next_u32(), rng_.next_u32()};
+    grid_.insert(to_unit(pts_[0].x), to_unit(pts_[0].y));
+    for (uint32_t i = 1; i < n; ++i) {
+      if (std::has_single_bit(i)) start_level(std::bit_width(i));
+      place(i);
+    }
+    return fallbacks_;
+  }
+
+ private:
+  // Level M: the points 2^(M-1) .. 2^M - 1 complete a (0,M,2)-net. occ_[k] marks the occupied
+  // elementary intervals of shape 2^k x 2^(M-k), indexed (x's top k digits, y's top M-k digits).
+  void start_level(int M) {
+    M_ = M;
+    const std::size_t cells = std::size_t{1} << M;
+    occ_.assign(M + 1, std::vector<uint8_t>(cells, 0));
+    tree_.assign(2 * cells, 0);
+    for (std::size_t c = 0; c < cells; ++c)
+      tree_[cells + c] = 1;
+    for (std::size_t node = cells - 1; node >= 1; --node)
+      tree_[node] = tree_[2 * node] + tree_[2 * node + 1];
+    const auto first = static_cast<uint32_t>(cells / 2);
+    for (uint32_t j = 0; j < first; ++j)
+      mark(pts_[j]);
+  }
+
+  std::size_t cell(int k, uint32_t x, uint32_t y) const {
+    return (static_cast<std::size_t>(top(x, k)) << (M_ - k)) | top(y, M_ - k);
+  }
+
+  void mark(FixedPoint2 p) {
+    for (int k = 0; k <= M_; ++k)
+      occ_[k][cell(k, p.x, p.y)] = 1;
+    tree_add(top(p.x, M_), -1);
+  }
+
+  void tree_add(uint32_t column, int delta) {
+    for (std::size_t node = (std::size_t{1} << M_) + column; node >= 1; node /= 2)
+      tree_[node] += delta;
+  }
+
+  // A free x column (M digits) whose top `plen` digits are px, drawn uniformly; -1 if none.
+  int64_t draw_column(uint32_t px, int plen) {
+    std::size_t node = (std::size_t{1} << plen) + px;
+    if (tree_[node] <= 0) return -1;
+    for (int d = plen; d < M_; ++d) {
+      const int left = tree_[2 * node], total = tree_[node];
+      node = 2 * node + (static_cast<int>(rng_.next_u32() % static_cast<uint32_t>(total)) >= left);
+    }
+    return static_cast<int64_t>(node - (std::size_t{1} << M_));
+  }
+
+  // Randomized depth-first search for y's top M digits given x's column: after d digits of y,
+  // the shape 2^(M-d) x 2^d interval must be empty. Digits 1..plen are forced to py's.
+  bool search_y(uint32_t column, uint32_t yprefix, int d, uint32_t py, int plen, uint32_t& row) {
+    if (d > 0 && occ_[M_ - d][(static_cast<std::size_t>(column >> d) << d) | yprefix]) return false;
+    if (d == M_) {
+      row = yprefix;
+      return true;
+    }
+    if (d < plen) {
+      const uint32_t digit = (py >> (plen - 1 - d)) & 1u;
+      return search_y(column, (yprefix << 1) | digit, d + 1, py, plen, row);
+    }
+    const uint32_t first = rng_.next_u32() >> 31;
+    for (uint32_t t = 0; t < 2; ++t)
+      if (search_y(column, (yprefix << 1) | (first ^ t), d + 1, py, plen, row)) return true;
+    return false;
+  }
+
+  // A random valid point whose x and y start with the given prefixes (plen digits each).
+  bool try_prefix(uint32_t px, uint32_t py, int plen, FixedPoint2& out) {
+    removed_.clear();
+    bool found = false;
+    for (;;) {
+      const int64_t column = draw_column(px, plen);
+      if (column < 0) break;
+      uint32_t row = 0;
+      if (search_y(static_cast<uint32_t>(column), 0, 0, py, plen, row)) {
+        out = {with_jitter(static_cast<uint32_t>(column), M_, rng_), with_jitter(row, M_, rng_)};
+        found = true;
+        break;
+      }
+      // No y fits this column: take it out of the draw until this search ends.
+      tree_add(static_cast<uint32_t>(column), -1);
+      removed_.push_back(static_cast<uint32_t>(column));
+    }
+    for (uint32_t c : removed_)
+      tree_add(c, +1);
+    return found;
+  }
+
+  // One candidate for point i, following pmj's sub-square rule when it can be met.
+  bool candidate(uint32_t i, FixedPoint2& out) {
+    // Sub-squares live in the 2^(n+1) grid with n = floor((M-1)/2); parent j's cell in the
+    // 2^n grid is kept.
+    const int n = (M_ - 1) / 2;
+    const uint32_t quarter = 1u << (2 * n);  // 4^n
+    uint32_t opts[2][2];
+    int count = 0;
+    if (M_ % 2 == 1) {
+      // 4^n .. 2 4^n - 1: diagonally opposite the parent's sub-square.
+      const FixedPoint2 p = pts_[i - quarter];
+      opts[0][0] = top(p.x, n + 1) ^ 1u;
+      opts[0][1] = top(p.y, n + 1) ^ 1u;
+      count = 1;
+    } else {
+      const uint32_t j = (i - 2 * quarter) % quarter;  // parent in the first 4^n points
+      const FixedPoint2 p = pts_[j];
+      const uint32_t sx = top(p.x, n + 1), sy = top(p.y, n + 1);
+      // The two sub-squares left empty by j and its diagonal partner: flip x only or y only.
+      const FixedPoint2 a{sx ^ 1u, sy}, b{sx, sy ^ 1u};
+      const bool a_first = (rng_.next_u32() >> 31) != 0;
+      const FixedPoint2 order[2] = {a_first ? a : b, a_first ? b : a};
+      for (const FixedPoint2& s : order) {
+        if (occupied_subsquare(s.x, s.y, n + 1)) continue;
+        opts[count][0] = s.x;
+        opts[count][1] = s.y;
+        ++count;
       }
     }
+    for (int o = 0; o < count; ++o)
+      if (try_prefix(opts[o][0], opts[o][1], n + 1, out)) return true;
+    ++fallbacks_;
+    return try_prefix(0, 0, 0, out);
   }
-}
+
+  // Whether an earlier point sits in sub-square (sx, sy) of side 2^-digits; at even M the
+  // square shape k = M/2 = digits is one of the tracked shapes.
+  bool occupied_subsquare(uint32_t sx, uint32_t sy, int digits) const {
+    return occ_[digits][(static_cast<std::size_t>(sx) << (M_ - digits)) | sy] != 0;
+  }
+
+  void place(uint32_t i) {
+    FixedPoint2 best{};
+    double best_d2 = -1.0;
+    for (int c = 0; c < candidates_; ++c) {
+      FixedPoint2 p;
+      if (!candidate(i, p))
+        throw std::runtime_error("pmj02: no valid position for point " + std::to_string(i));
+      if (candidates_ == 1) {
+        best = p;
+        break;
+      }
+      const double d2 = grid_.nearest_distance2(to_unit(p.x), to_unit(p.y));
+      if (d2 > best_d2) {
+        best_d2 = d2;
+        best = p;
+      }
+    }
+    pts_[i] = best;
+    mark(best);
+    if (candidates_ > 1) grid_.insert(to_unit(best.x), to_unit(best.y));
+  }
+
+  Pcg32 rng_;
+  std::vector<FixedPoint2>& pts_;
+  int candidates_;
+  TorusGrid grid_;
+  int M_ = 0;
+  std::vector<std::vector<uint8_t>> occ_;
+  std::vector<int> tree_;
+  std::vector<uint32_t> removed_;
+  uint32_t fallbacks_ = 0;
+};
 
 }  // namespace
 
@@ -195,12 +350,7 @@ Pmj02::Pmj02(uint64_t seed, uint32_t capacity, int candidates)
     generate_02(points_, rng);
     return;
   }
-  // Two streams, each consumed in index order, so the table's prefix does not depend on its size;
-  // a stream of its own for the points, so pmj02bn's sets are not pmj02's reordered.
-  Pcg32 points_rng(derive_seed(seed, 0x93b1)), order_rng(derive_seed(seed, 0x93b2));
-  std::vector<FixedPoint2> s(points_.size());
-  generate_02(s, points_rng);
-  order_blue_noise(s, points_, candidates, order_rng);
+  rule_fallbacks_ = Pmj02Builder(seed, points_, candidates).build();
 }
 
 }  // namespace disklab::sequence

@@ -67,16 +67,24 @@ class BestCandidate : public TabulatedSequence {
 // sub-square rule (Christensen et al. 2018, Sec. 3) follows: at 2 * 4^n points every square of
 // side 2^-n holds two points in diagonally opposite sub-squares, at 3 * 4^n three in distinct ones.
 //
-// pmj02bn (`candidates` > 1): the points of that construction (from a stream of their own) in a
-// blue-noise order: level [2^n, 2^(n+1)) half by half (each half an aligned block, so a net), and
-// within a half the point farthest (toroidal distance) from all earlier points among `candidates`
-// drawn from the half's remaining ones. Prefixes 2^m, their halves and the sub-square rule hold
-// as for pmj02. Unlike the 2018 blue-noise variant, which chose among free strata, the sets at
-// 2^m and 3 * 2^(m-1) points are the construction's nets: blue noise shapes the order in between.
+// pmj02bn (`candidates` > 1): the blue-noise variant of Christensen et al. 2018 (Sec. 6), built
+// with their stratum search instead: point i with 2^(M-1) <= i < 2^M goes into an elementary
+// interval of area 2^-M left empty by points 0..i-1, for all M+1 shapes, in the sub-square the
+// pmj rule gives; `candidates` such positions are drawn (a random descent over free x strata, a
+// randomized depth-first search over y strata, uniform jitter in the finest cell) and the one
+// farthest (toroidal distance) from all earlier points is kept. So the sets at 2^m points are
+// blue noise, not only their order. Every power-of-two prefix is a (0,m,2)-net and so is its
+// second half (it fills the complement of a net); smaller aligned blocks are not guaranteed.
 class Pmj02 : public TabulatedSequence {
  public:
   static constexpr int kBlueNoiseCandidates = 10;
   explicit Pmj02(uint64_t seed, uint32_t capacity = kDefaultCapacity, int candidates = 1);
+  // pmj02bn: how often a candidate had to drop the pmj sub-square rule to find a valid position
+  // (diagnostics; 0 for pmj02, whose construction always meets it).
+  uint32_t rule_fallbacks() const { return rule_fallbacks_; }
+
+ private:
+  uint32_t rule_fallbacks_ = 0;
 };
 
 class Pmj02BlueNoise : public Pmj02 {
