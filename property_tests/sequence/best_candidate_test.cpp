@@ -67,7 +67,7 @@ TEST(BestCandidate, Pmj02BlueNoiseIsBlueNoiseAtPowersOfTwo) {
   };
   for (const Case& c : {Case{256, test::seq::kBlueNoiseSeeds, test::seq::kBlueNoiseGainN256},
                         Case{1024, test::seq::kBlueNoiseSeeds, test::seq::kBlueNoiseGainN1024},
-                        Case{4096, 64, 0.0}}) {
+                        Case{4096, test::seq::kBlueNoiseSeedsN4096, 0.0}}) {
     double mean_bn = 0.0, mean_pmj = 0.0;
     for (int s = 0; s < c.seeds; ++s) {
       const auto seed = static_cast<uint64_t>(s);
@@ -78,11 +78,12 @@ TEST(BestCandidate, Pmj02BlueNoiseIsBlueNoiseAtPowersOfTwo) {
     mean_pmj /= c.seeds;
     const double ratio = mean_bn / mean_pmj;
     RecordProperty("ratio_N" + std::to_string(c.n), std::to_string(ratio));
-    if (c.gain > 0.0)
+    if (c.gain > 0.0) {
       EXPECT_GT(ratio, c.gain) << "N=" << c.n << ", " << c.seeds
                                << " seeds: mean min distance x sqrt(N) pmj02bn "
                                << mean_bn * std::sqrt(c.n) << " vs pmj02 "
                                << mean_pmj * std::sqrt(c.n) << "; ratio " << ratio;
+    }
   }
 }
 

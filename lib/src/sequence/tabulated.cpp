@@ -137,6 +137,8 @@ uint32_t with_jitter(uint32_t stratum, int digits, Pcg32& rng) {
 // avoids the elementary intervals used by points 0..i-1. Also requiring every aligned block to be
 // a net makes this greedy random placement run into dead ends (tried: at every even level, and
 // level 12 never completes); pmj02 gets that property from the xor construction above instead.
+// The valid positions in the rule's sub-squares are surveyed once per point (SubSquare), so each
+// of its candidates costs a few random draws instead of a search.
 class Pmj02Builder {
  public:
   Pmj02Builder(uint64_t seed, std::vector<FixedPoint2>& points, int candidates)
@@ -158,6 +160,16 @@ class Pmj02Builder {
   }
 
  private:
+  // The valid positions of a point inside one sub-square S of side 2^-plen (x and y start with
+  // px and py), where 2 plen >= M. An elementary interval of shape 2^k x 2^(M-k) then has its
+  // x digits inside S's when k <= plen and its y digits inside S's when M - k <= plen, so shapes
+  // M - plen <= k <= plen are one interval each, and the others constrain x alone (k > plen) or
+  // y alone (k < M - plen): the valid (column, row) pairs are the product cols x rows.
+  struct SubSquare {
+    bool empty = true;
+    std::vector<uint32_t> cols, rows;  // M-digit strata, ascending
+  };
+
   // Level M: the points 2^(M-1) .. 2^M - 1 complete a (0,M,2)-net. occ_[k] marks the occupied
   // elementary intervals of shape 2^k x 2^(M-k), indexed (x's top k digits, y's top M-k digits).
   void start_level(int M) {
@@ -177,6 +189,10 @@ class Pmj02Builder {
   std::size_t cell(int k, uint32_t x, uint32_t y) const {
     return (static_cast<std::size_t>(top(x, k)) << (M_ - k)) | top(y, M_ - k);
   }
+  // Whether the shape-k interval with the given top k digits of x and M-k digits of y is used.
+  bool used(int k, uint32_t xk, uint32_t yk) const {
+    return occ_[k][(static_cast<std::size_t>(xk) << (M_ - k)) | yk] != 0;
+  }
 
   void mark(FixedPoint2 p) {
     for (int k = 0; k <= M_; ++k)
@@ -187,6 +203,67 @@ class Pmj02Builder {
   void tree_add(uint32_t column, int delta) {
     for (std::size_t node = (std::size_t{1} << M_) + column; node >= 1; node /= 2)
       tree_[node] += delta;
+  }
+
+  // Columns of S, depth first: x prefix `xk` of k digits, the shape-k interval checked with y's
+  // top M-k digits (inside py, since k > plen >= M - plen).
+  void collect_cols(uint32_t xk, int k, uint32_t py, int plen, std::vector<uint32_t>& out) const {
+    if (k > plen && used(k, xk, py >> (plen - (M_ - k)))) return;
+    if (k == M_) {
+      out.push_back(xk);
+      return;
+    }
+    collect_cols(xk << 1, k + 1, py, plen, out);
+    collect_cols((xk << 1) | 1u, k + 1, py, plen, out);
+  }
+  // Rows of S likewise: y prefix `yd` of d digits, the shape M-d interval checked with x's top
+  // M-d digits (inside px).
+  void collect_rows(uint32_t yd, int d, uint32_t px, int plen, std::vector<uint32_t>& out) const {
+    if (d > plen && used(M_ - d, px >> (plen - (M_ - d)), yd)) return;
+    if (d == M_) {
+      out.push_back(yd);
+      return;
+    }
+    collect_rows(yd << 1, d + 1, px, plen, out);
+    collect_rows((yd << 1) | 1u, d + 1, px, plen, out);
+  }
+
+  void survey(uint32_t px, uint32_t py, int plen, SubSquare& s) const {
+    s.cols.clear();
+    s.rows.clear();
+    s.empty = true;
+    for (int k = M_ - plen; k <= plen; ++k)
+      if (used(k, px >> (plen - k), py >> (plen - (M_ - k)))) return;
+    collect_cols(px, plen, py, plen, s.cols);
+    if (s.cols.empty()) return;
+    collect_rows(py, plen, px, plen, s.rows);
+    s.empty = s.rows.empty();
+  }
+
+  // A candidate in S, distributed as the 2018 search's (fallback_search below, run with S's
+  // prefixes, as main's builder did): it takes a uniform free column and drops it while no row
+  // fits, so its column is uniform over `cols`; its randomized depth-first search over y's digits
+  // enters either child of a node with equal probability when both hold valid rows, and the
+  // descent over `rows` splits the same way. Only the random stream's use differs.
+  FixedPoint2 draw(const SubSquare& s) {
+    const uint32_t column = s.cols[uniform_index(s.cols.size())];
+    std::size_t lo = 0, hi = s.rows.size();
+    for (uint32_t bit = 1u << (M_ - 1); hi - lo > 1; bit >>= 1) {
+      // rows[lo, hi) share the digits above `bit`; split them by that digit.
+      std::size_t mid = lo;
+      while (mid < hi && (s.rows[mid] & bit) == 0)
+        ++mid;
+      if (mid == lo || mid == hi) continue;
+      if (rng_.next_u32() >> 31)
+        lo = mid;
+      else
+        hi = mid;
+    }
+    return {with_jitter(column, M_, rng_), with_jitter(s.rows[lo], M_, rng_)};
+  }
+
+  std::size_t uniform_index(std::size_t n) {
+    return static_cast<std::size_t>((uint64_t{rng_.next_u32()} * n) >> 32u);
   }
 
   // A free x column (M digits) whose top `plen` digits are px, drawn uniformly; -1 if none.
@@ -201,37 +278,34 @@ class Pmj02Builder {
   }
 
   // Randomized depth-first search for y's top M digits given x's column: after d digits of y,
-  // the shape 2^(M-d) x 2^d interval must be empty. Digits 1..plen are forced to py's.
-  bool search_y(uint32_t column, uint32_t yprefix, int d, uint32_t py, int plen, uint32_t& row) {
-    if (d > 0 && occ_[M_ - d][(static_cast<std::size_t>(column >> d) << d) | yprefix]) return false;
+  // the shape 2^(M-d) x 2^d interval must be empty.
+  bool search_y(uint32_t column, uint32_t yprefix, int d, uint32_t& row) {
+    if (d > 0 && used(M_ - d, column >> d, yprefix)) return false;
     if (d == M_) {
       row = yprefix;
       return true;
     }
-    if (d < plen) {
-      const uint32_t digit = (py >> (plen - 1 - d)) & 1u;
-      return search_y(column, (yprefix << 1) | digit, d + 1, py, plen, row);
-    }
     const uint32_t first = rng_.next_u32() >> 31;
     for (uint32_t t = 0; t < 2; ++t)
-      if (search_y(column, (yprefix << 1) | (first ^ t), d + 1, py, plen, row)) return true;
+      if (search_y(column, (yprefix << 1) | (first ^ t), d + 1, row)) return true;
     return false;
   }
 
-  // A random valid point whose x and y start with the given prefixes (plen digits each).
-  bool try_prefix(uint32_t px, uint32_t py, int plen, FixedPoint2& out) {
+  // The 2018 search without the sub-square rule (Christensen et al. 2018, Sec. 5): a random
+  // descent over free x columns, a randomized depth-first search over y, a column with no valid
+  // y taken out of the draw until a point is found.
+  bool fallback_search(FixedPoint2& out) {
     removed_.clear();
     bool found = false;
     for (;;) {
-      const int64_t column = draw_column(px, plen);
+      const int64_t column = draw_column(0, 0);
       if (column < 0) break;
       uint32_t row = 0;
-      if (search_y(static_cast<uint32_t>(column), 0, 0, py, plen, row)) {
+      if (search_y(static_cast<uint32_t>(column), 0, 0, row)) {
         out = {with_jitter(static_cast<uint32_t>(column), M_, rng_), with_jitter(row, M_, rng_)};
         found = true;
         break;
       }
-      // No y fits this column: take it out of the draw until this search ends.
       tree_add(static_cast<uint32_t>(column), -1);
       removed_.push_back(static_cast<uint32_t>(column));
     }
@@ -240,57 +314,50 @@ class Pmj02Builder {
     return found;
   }
 
-  // One candidate for point i, following pmj's sub-square rule when it can be met.
-  bool candidate(uint32_t i, FixedPoint2& out) {
-    // Sub-squares live in the 2^(n+1) grid with n = floor((M-1)/2); parent j's cell in the
-    // 2^n grid is kept.
+  // The sub-squares pmj's rule allows for point i (Christensen et al. 2018, Sec. 3), in the
+  // 2^(n+1) grid with n = floor((M-1)/2); parent j's cell in the 2^n grid is kept. Returns how
+  // many (1 at odd M, 2 at even M, in either order per candidate).
+  int rule_subsquares(uint32_t i, uint32_t (&sub)[2][2]) const {
     const int n = (M_ - 1) / 2;
     const uint32_t quarter = 1u << (2 * n);  // 4^n
-    uint32_t opts[2][2];
-    int count = 0;
     if (M_ % 2 == 1) {
       // 4^n .. 2 4^n - 1: diagonally opposite the parent's sub-square.
       const FixedPoint2 p = pts_[i - quarter];
-      opts[0][0] = top(p.x, n + 1) ^ 1u;
-      opts[0][1] = top(p.y, n + 1) ^ 1u;
-      count = 1;
-    } else {
-      const uint32_t j = (i - 2 * quarter) % quarter;  // parent in the first 4^n points
-      const FixedPoint2 p = pts_[j];
-      const uint32_t sx = top(p.x, n + 1), sy = top(p.y, n + 1);
-      // The two sub-squares left empty by j and its diagonal partner: flip x only or y only.
-      const FixedPoint2 a{sx ^ 1u, sy}, b{sx, sy ^ 1u};
-      const bool a_first = (rng_.next_u32() >> 31) != 0;
-      const FixedPoint2 order[2] = {a_first ? a : b, a_first ? b : a};
-      for (const FixedPoint2& s : order) {
-        if (occupied_subsquare(s.x, s.y, n + 1)) continue;
-        opts[count][0] = s.x;
-        opts[count][1] = s.y;
-        ++count;
-      }
+      sub[0][0] = top(p.x, n + 1) ^ 1u;
+      sub[0][1] = top(p.y, n + 1) ^ 1u;
+      return 1;
     }
-    for (int o = 0; o < count; ++o)
-      if (try_prefix(opts[o][0], opts[o][1], n + 1, out)) return true;
-    ++fallbacks_;
-    return try_prefix(0, 0, 0, out);
+    const uint32_t j = (i - 2 * quarter) % quarter;  // parent in the first 4^n points
+    const FixedPoint2 p = pts_[j];
+    const uint32_t sx = top(p.x, n + 1), sy = top(p.y, n + 1);
+    // The two sub-squares left empty by j and its diagonal partner: flip x only or y only.
+    sub[0][0] = sx ^ 1u;
+    sub[0][1] = sy;
+    sub[1][0] = sx;
+    sub[1][1] = sy ^ 1u;
+    return 2;
   }
 
-  // Whether an earlier point sits in sub-square (sx, sy) of side 2^-digits; at even M the
-  // square shape k = M/2 = digits is one of the tracked shapes.
-  bool occupied_subsquare(uint32_t sx, uint32_t sy, int digits) const {
-    return occ_[digits][(static_cast<std::size_t>(sx) << (M_ - digits)) | sy] != 0;
-  }
-
+  // Point i: `candidates_` valid positions, each in the first of the rule's sub-squares (in a
+  // random order) that has one, else anywhere valid; the one farthest from points 0..i-1 wins.
   void place(uint32_t i) {
+    const int plen = (M_ - 1) / 2 + 1;
+    uint32_t sub[2][2];
+    const int count = rule_subsquares(i, sub);
+    for (int s = 0; s < count; ++s)
+      survey(sub[s][0], sub[s][1], plen, squares_[s]);
     FixedPoint2 best{};
     double best_d2 = -1.0;
     for (int c = 0; c < candidates_; ++c) {
+      int s = count == 2 ? static_cast<int>(rng_.next_u32() >> 31) : 0;
+      if (squares_[s].empty && count == 2) s ^= 1;
       FixedPoint2 p;
-      if (!candidate(i, p))
-        throw std::runtime_error("pmj02: no valid position for point " + std::to_string(i));
-      if (candidates_ == 1) {
-        best = p;
-        break;
+      if (!squares_[s].empty) {
+        p = draw(squares_[s]);
+      } else {
+        ++fallbacks_;
+        if (!fallback_search(p))
+          throw std::runtime_error("pmj02: no valid position for point " + std::to_string(i));
       }
       const double d2 = grid_.nearest_distance2(to_unit(p.x), to_unit(p.y));
       if (d2 > best_d2) {
@@ -300,7 +367,7 @@ class Pmj02Builder {
     }
     pts_[i] = best;
     mark(best);
-    if (candidates_ > 1) grid_.insert(to_unit(best.x), to_unit(best.y));
+    grid_.insert(to_unit(best.x), to_unit(best.y));
   }
 
   Pcg32 rng_;
@@ -311,6 +378,7 @@ class Pmj02Builder {
   std::vector<std::vector<uint8_t>> occ_;
   std::vector<int> tree_;
   std::vector<uint32_t> removed_;
+  SubSquare squares_[2];
   uint32_t fallbacks_ = 0;
 };
 

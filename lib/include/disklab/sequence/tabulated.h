@@ -69,12 +69,13 @@ class BestCandidate : public TabulatedSequence {
 //
 // pmj02bn (`candidates` > 1): the blue-noise variant of Christensen et al. 2018 (Sec. 6), built
 // with their stratum search instead: point i with 2^(M-1) <= i < 2^M goes into an elementary
-// interval of area 2^-M left empty by points 0..i-1, for all M+1 shapes, in the sub-square the
-// pmj rule gives; `candidates` such positions are drawn (a random descent over free x strata, a
-// randomized depth-first search over y strata, uniform jitter in the finest cell) and the one
-// farthest (toroidal distance) from all earlier points is kept. So the sets at 2^m points are
-// blue noise, not only their order. Every power-of-two prefix is a (0,m,2)-net and so is its
-// second half (it fills the complement of a net); smaller aligned blocks are not guaranteed.
+// interval of area 2^-M left empty by points 0..i-1, for all M+1 shapes, in a sub-square the pmj
+// rule allows; `candidates` such positions are drawn as the 2018 search draws them (a uniform
+// free x stratum that admits a y stratum, a random descent over the valid y strata, uniform jitter
+// in the finest cell) and the one farthest (toroidal distance) from all earlier points is kept.
+// So the sets at 2^m points are blue noise, not only their order. Every power-of-two prefix is a
+// (0,m,2)-net and so is its second half (it fills the complement of a net); smaller aligned blocks
+// are not guaranteed.
 class Pmj02 : public TabulatedSequence {
  public:
   static constexpr int kBlueNoiseCandidates = 10;
