@@ -14,6 +14,13 @@
 namespace disklab::sequence {
 namespace {
 
+double torus_distance2(double ax, double ay, double bx, double by) {
+  double dx = std::abs(ax - bx), dy = std::abs(ay - by);
+  dx = std::min(dx, 1.0 - dx);
+  dy = std::min(dy, 1.0 - dy);
+  return dx * dx + dy * dy;
+}
+
 // Nearest-neighbour distances on the unit torus with a uniform grid that refines as points
 // arrive (about two points per cell), so a query touches O(1) cells on average.
 class TorusGrid {
@@ -46,12 +53,8 @@ class TorusGrid {
         for (int dx = -r; dx <= r; ++dx) {
           if (std::max(std::abs(dx), std::abs(dy)) != r) continue;  // ring r only
           const int gx = wrap(cx + dx), gy = wrap(cy + dy);
-          for (int p = head_[gy * side_ + gx]; p >= 0; p = next_[p]) {
-            double ddx = std::abs(xs_[p] - x), ddy = std::abs(ys_[p] - y);
-            ddx = std::min(ddx, 1.0 - ddx);
-            ddy = std::min(ddy, 1.0 - ddy);
-            best = std::min(best, ddx * ddx + ddy * ddy);
-          }
+          for (int p = head_[gy * side_ + gx]; p >= 0; p = next_[p])
+            best = std::min(best, torus_distance2(xs_[p], ys_[p], x, y));
         }
       // Every point outside rings 0..r is at least r cell widths away (the query is inside
       // its own cell), so once the best distance is that small the search is over.
@@ -59,6 +62,23 @@ class TorusGrid {
       if (best <= reach * reach) break;
     }
     return best;
+  }
+
+  // Appends to `out` (as x, y pairs) every stored point within toroidal distance `radius` of
+  // (x, y), and possibly some farther ones.
+  void gather(double x, double y, double radius, std::vector<double>& out) const {
+    const int reach = static_cast<int>(radius * side_) + 1;
+    const bool all = 2 * reach + 1 >= side_;  // every cell, each once
+    const int lo_x = all ? 0 : cell_of(x) - reach, lo_y = all ? 0 : cell_of(y) - reach;
+    const int span = all ? side_ : 2 * reach + 1;
+    const double r2 = radius * radius;
+    for (int dy = 0; dy < span; ++dy)
+      for (int dx = 0; dx < span; ++dx)
+        for (int p = head_[wrap(lo_y + dy) * side_ + wrap(lo_x + dx)]; p >= 0; p = next_[p])
+          if (torus_distance2(xs_[p], ys_[p], x, y) <= r2) {
+            out.push_back(xs_[p]);
+            out.push_back(ys_[p]);
+          }
   }
 
  private:
@@ -168,41 +188,35 @@ class Pmj02Builder {
   struct SubSquare {
     bool empty = true;
     std::vector<uint32_t> cols, rows;  // M-digit strata, ascending
+    bool gathered = false;
+    std::vector<double> near;  // x, y pairs: every earlier point that can be a candidate's nearest
   };
 
-  // Level M: the points 2^(M-1) .. 2^M - 1 complete a (0,M,2)-net. occ_[k] marks the occupied
-  // elementary intervals of shape 2^k x 2^(M-k), indexed (x's top k digits, y's top M-k digits).
+  // Level M: the points 2^(M-1) .. 2^M - 1 complete a (0,M,2)-net. Bit (k << M) + c of occ_ marks
+  // the elementary interval c of shape 2^k x 2^(M-k) as used, c indexed (x's top k digits, y's top
+  // M-k digits); bits keep all M+1 shapes within a few cache-sized blocks.
   void start_level(int M) {
     M_ = M;
-    const std::size_t cells = std::size_t{1} << M;
-    occ_.assign(M + 1, std::vector<uint8_t>(cells, 0));
-    tree_.assign(2 * cells, 0);
-    for (std::size_t c = 0; c < cells; ++c)
-      tree_[cells + c] = 1;
-    for (std::size_t node = cells - 1; node >= 1; --node)
-      tree_[node] = tree_[2 * node] + tree_[2 * node + 1];
-    const auto first = static_cast<uint32_t>(cells / 2);
+    occ_.assign(((static_cast<std::size_t>(M) + 1) << M) / 64 + 1, 0);
+    const uint32_t first = 1u << (M - 1);
     for (uint32_t j = 0; j < first; ++j)
       mark(pts_[j]);
   }
 
-  std::size_t cell(int k, uint32_t x, uint32_t y) const {
-    return (static_cast<std::size_t>(top(x, k)) << (M_ - k)) | top(y, M_ - k);
+  std::size_t bit(int k, uint32_t xk, uint32_t yk) const {
+    return (static_cast<std::size_t>(k) << M_) | (static_cast<std::size_t>(xk) << (M_ - k)) | yk;
   }
   // Whether the shape-k interval with the given top k digits of x and M-k digits of y is used.
   bool used(int k, uint32_t xk, uint32_t yk) const {
-    return occ_[k][(static_cast<std::size_t>(xk) << (M_ - k)) | yk] != 0;
+    const std::size_t b = bit(k, xk, yk);
+    return (occ_[b / 64] >> (b % 64)) & 1u;
   }
 
   void mark(FixedPoint2 p) {
-    for (int k = 0; k <= M_; ++k)
-      occ_[k][cell(k, p.x, p.y)] = 1;
-    tree_add(top(p.x, M_), -1);
-  }
-
-  void tree_add(uint32_t column, int delta) {
-    for (std::size_t node = (std::size_t{1} << M_) + column; node >= 1; node /= 2)
-      tree_[node] += delta;
+    for (int k = 0; k <= M_; ++k) {
+      const std::size_t b = bit(k, top(p.x, k), top(p.y, M_ - k));
+      occ_[b / 64] |= uint64_t{1} << (b % 64);
+    }
   }
 
   // Columns of S, depth first: x prefix `xk` of k digits, the shape-k interval checked with y's
@@ -238,13 +252,38 @@ class Pmj02Builder {
     if (s.cols.empty()) return;
     collect_rows(py, plen, px, plen, s.rows);
     s.empty = s.rows.empty();
+    s.gathered = false;
   }
 
-  // A candidate in S, distributed as the 2018 search's (fallback_search below, run with S's
-  // prefixes, as main's builder did): it takes a uniform free column and drops it while no row
-  // fits, so its column is uniform over `cols`; its randomized depth-first search over y's digits
-  // enters either child of a node with equal probability when both hold valid rows, and the
-  // descent over `rows` splits the same way. Only the random stream's use differs.
+  // The earlier points near S's valid cells, gathered once for all its candidates: a candidate q
+  // in the box spanned by cols x rows (centre c, half-diagonal b) has its nearest point within
+  // d(q, c) + d(c) <= b + d(c) of q, so within 2 b + d(c) of c, where d(c) is c's nearest-point
+  // distance (toroidal distances obey the triangle inequality).
+  void gather(SubSquare& s) {
+    const double w = std::ldexp(1.0, -M_);
+    const double x0 = s.cols.front() * w, x1 = (s.cols.back() + 1.0) * w;
+    const double y0 = s.rows.front() * w, y1 = (s.rows.back() + 1.0) * w;
+    const double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1);
+    const double b = 0.5 * std::hypot(x1 - x0, y1 - y0);
+    // The margin covers the rounding of the distances, each within a few ulps of 1.
+    const double radius = std::sqrt(grid_.nearest_distance2(cx, cy)) + 2.0 * b + 1e-12;
+    s.near.clear();
+    grid_.gather(cx, cy, radius, s.near);
+    s.gathered = true;
+  }
+
+  static double nearest_distance2(const std::vector<double>& near, double x, double y) {
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < near.size(); k += 2)
+      best = std::min(best, torus_distance2(near[k], near[k + 1], x, y));
+    return best;
+  }
+
+  // A candidate in S, distributed as the 2018 search's with S's prefixes (main's builder): that
+  // search takes a uniform free column and drops it while no row fits, so its column is uniform
+  // over `cols`; its randomized depth-first search over y's digits enters either child of a node
+  // with equal probability when both hold valid rows, and the descent over `rows` splits the same
+  // way. Only the random stream's use differs.
   FixedPoint2 draw(const SubSquare& s) {
     const uint32_t column = s.cols[uniform_index(s.cols.size())];
     std::size_t lo = 0, hi = s.rows.size();
@@ -266,17 +305,6 @@ class Pmj02Builder {
     return static_cast<std::size_t>((uint64_t{rng_.next_u32()} * n) >> 32u);
   }
 
-  // A free x column (M digits) whose top `plen` digits are px, drawn uniformly; -1 if none.
-  int64_t draw_column(uint32_t px, int plen) {
-    std::size_t node = (std::size_t{1} << plen) + px;
-    if (tree_[node] <= 0) return -1;
-    for (int d = plen; d < M_; ++d) {
-      const int left = tree_[2 * node], total = tree_[node];
-      node = 2 * node + (static_cast<int>(rng_.next_u32() % static_cast<uint32_t>(total)) >= left);
-    }
-    return static_cast<int64_t>(node - (std::size_t{1} << M_));
-  }
-
   // Randomized depth-first search for y's top M digits given x's column: after d digits of y,
   // the shape 2^(M-d) x 2^d interval must be empty.
   bool search_y(uint32_t column, uint32_t yprefix, int d, uint32_t& row) {
@@ -291,27 +319,24 @@ class Pmj02Builder {
     return false;
   }
 
-  // The 2018 search without the sub-square rule (Christensen et al. 2018, Sec. 5): a random
-  // descent over free x columns, a randomized depth-first search over y, a column with no valid
-  // y taken out of the draw until a point is found.
+  // The 2018 search without the sub-square rule (Christensen et al. 2018, Sec. 5): a uniform free
+  // x column (shape 2^M x 1), taken out of the draw while no y fits, and a randomized depth-first
+  // search over y.
   bool fallback_search(FixedPoint2& out) {
-    removed_.clear();
-    bool found = false;
-    for (;;) {
-      const int64_t column = draw_column(0, 0);
-      if (column < 0) break;
+    free_.clear();
+    for (uint32_t column = 0; column < (1u << M_); ++column)
+      if (!used(M_, column, 0)) free_.push_back(column);
+    while (!free_.empty()) {
+      const std::size_t k = uniform_index(free_.size());
       uint32_t row = 0;
-      if (search_y(static_cast<uint32_t>(column), 0, 0, row)) {
-        out = {with_jitter(static_cast<uint32_t>(column), M_, rng_), with_jitter(row, M_, rng_)};
-        found = true;
-        break;
+      if (search_y(free_[k], 0, 0, row)) {
+        out = {with_jitter(free_[k], M_, rng_), with_jitter(row, M_, rng_)};
+        return true;
       }
-      tree_add(static_cast<uint32_t>(column), -1);
-      removed_.push_back(static_cast<uint32_t>(column));
+      free_[k] = free_.back();
+      free_.pop_back();
     }
-    for (uint32_t c : removed_)
-      tree_add(c, +1);
-    return found;
+    return false;
   }
 
   // The sub-squares pmj's rule allows for point i (Christensen et al. 2018, Sec. 3), in the
@@ -352,14 +377,17 @@ class Pmj02Builder {
       int s = count == 2 ? static_cast<int>(rng_.next_u32() >> 31) : 0;
       if (squares_[s].empty && count == 2) s ^= 1;
       FixedPoint2 p;
-      if (!squares_[s].empty) {
-        p = draw(squares_[s]);
+      double d2;
+      if (SubSquare& square = squares_[s]; !square.empty) {
+        p = draw(square);
+        if (!square.gathered) gather(square);
+        d2 = nearest_distance2(square.near, to_unit(p.x), to_unit(p.y));
       } else {
         ++fallbacks_;
         if (!fallback_search(p))
           throw std::runtime_error("pmj02: no valid position for point " + std::to_string(i));
+        d2 = grid_.nearest_distance2(to_unit(p.x), to_unit(p.y));
       }
-      const double d2 = grid_.nearest_distance2(to_unit(p.x), to_unit(p.y));
       if (d2 > best_d2) {
         best_d2 = d2;
         best = p;
@@ -375,9 +403,8 @@ class Pmj02Builder {
   int candidates_;
   TorusGrid grid_;
   int M_ = 0;
-  std::vector<std::vector<uint8_t>> occ_;
-  std::vector<int> tree_;
-  std::vector<uint32_t> removed_;
+  std::vector<uint64_t> occ_;
+  std::vector<uint32_t> free_;
   SubSquare squares_[2];
   uint32_t fallbacks_ = 0;
 };
