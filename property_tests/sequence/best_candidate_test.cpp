@@ -15,15 +15,35 @@
 namespace disklab::sequence {
 namespace {
 
+double toroidal_distance2(Point2 a, Point2 b) {
+  double dx = std::abs(a.x - b.x), dy = std::abs(a.y - b.y);
+  dx = std::min(dx, 1.0 - dx);
+  dy = std::min(dy, 1.0 - dy);
+  return dx * dx + dy * dy;
+}
+
+// Exact minimum over all pairs. A pair closer than the cell width 1/s of an s x s grid lies in
+// neighbouring cells (toroidally), so the grid finds it; if no pair is that close, all pairs.
 double min_toroidal_distance(const std::vector<Point2>& p) {
   double best = std::numeric_limits<double>::infinity();
+  const auto s = static_cast<int>(std::sqrt(static_cast<double>(p.size())));
+  if (s >= 3) {
+    auto cell = [s](double v) { return std::min(static_cast<int>(v * s), s - 1); };
+    std::vector<std::vector<std::size_t>> cells(static_cast<std::size_t>(s) * s);
+    for (std::size_t i = 0; i < p.size(); ++i)
+      cells[cell(p[i].y) * s + cell(p[i].x)].push_back(i);
+    for (std::size_t i = 0; i < p.size(); ++i)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int gx = (cell(p[i].x) + dx + s) % s, gy = (cell(p[i].y) + dy + s) % s;
+          for (std::size_t j : cells[gy * s + gx])
+            if (j != i) best = std::min(best, toroidal_distance2(p[i], p[j]));
+        }
+    if (best * s * s < 1.0) return std::sqrt(best);
+  }
   for (std::size_t i = 0; i < p.size(); ++i)
-    for (std::size_t j = i + 1; j < p.size(); ++j) {
-      double dx = std::abs(p[i].x - p[j].x), dy = std::abs(p[i].y - p[j].y);
-      dx = std::min(dx, 1.0 - dx);
-      dy = std::min(dy, 1.0 - dy);
-      best = std::min(best, dx * dx + dy * dy);
-    }
+    for (std::size_t j = i + 1; j < p.size(); ++j)
+      best = std::min(best, toroidal_distance2(p[i], p[j]));
   return std::sqrt(best);
 }
 
