@@ -64,25 +64,57 @@ class TorusGrid {
     return best;
   }
 
-  // Appends to `out` (as x, y pairs) every stored point within toroidal distance `radius` of
-  // (x, y), and possibly some farther ones.
-  void gather(double x, double y, double radius, std::vector<double>& out) const {
+  // Sets `out` (x, y pairs) to the stored points within d + margin of (x, y), d the distance
+  // to the nearest one, and possibly some farther ones; none if the grid is empty.
+  void near_points(double x, double y, double margin, std::vector<double>& out) const {
+    out.clear();
+    if (xs_.empty()) return;
+    if (side_ >= 3) {
+      // The 3 x 3 cells around (x, y) first: every point outside them is at least `edge` away.
+      const int cx = cell_of(x), cy = cell_of(y);
+      const double h = 1.0 / side_;
+      const double fx = x - cx * h, fy = y - cy * h;
+      const double edge = h + std::min(std::min(fx, h - fx), std::min(fy, h - fy));
+      double best = std::numeric_limits<double>::infinity();
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+          for (int p = head_[wrap(cy + dy) * side_ + wrap(cx + dx)]; p >= 0; p = next_[p]) {
+            best = std::min(best, torus_distance2(xs_[p], ys_[p], x, y));
+            out.push_back(xs_[p]);
+            out.push_back(ys_[p]);
+          }
+      const double radius = std::sqrt(best) + margin;
+      if (radius <= edge) {
+        keep_within(x, y, radius, out);
+        return;
+      }
+      out.clear();
+    }
+    const double radius = std::sqrt(nearest_distance2(x, y)) + margin;
     const int reach = static_cast<int>(radius * side_) + 1;
     const bool all = 2 * reach + 1 >= side_;  // every cell, each once
     const int lo_x = all ? 0 : cell_of(x) - reach, lo_y = all ? 0 : cell_of(y) - reach;
     const int span = all ? side_ : 2 * reach + 1;
-    const double r2 = radius * radius;
     for (int dy = 0; dy < span; ++dy)
       for (int dx = 0; dx < span; ++dx)
-        for (int p = head_[wrap(lo_y + dy) * side_ + wrap(lo_x + dx)]; p >= 0; p = next_[p])
-          if (torus_distance2(xs_[p], ys_[p], x, y) <= r2) {
-            out.push_back(xs_[p]);
-            out.push_back(ys_[p]);
-          }
+        for (int p = head_[wrap(lo_y + dy) * side_ + wrap(lo_x + dx)]; p >= 0; p = next_[p]) {
+          out.push_back(xs_[p]);
+          out.push_back(ys_[p]);
+        }
+    keep_within(x, y, radius, out);
   }
 
  private:
   int cell_of(double v) const { return std::min(static_cast<int>(v * side_), side_ - 1); }
+  static void keep_within(double x, double y, double radius, std::vector<double>& pts) {
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < pts.size(); k += 2)
+      if (torus_distance2(pts[k], pts[k + 1], x, y) <= radius * radius) {
+        pts[kept++] = pts[k];
+        pts[kept++] = pts[k + 1];
+      }
+    pts.resize(kept);
+  }
   int wrap(int c) const { return ((c % side_) + side_) % side_; }
   void link(int p) {
     const int c = cell_of(ys_[p]) * side_ + cell_of(xs_[p]);
@@ -265,10 +297,8 @@ class Pmj02Builder {
     const double y0 = s.rows.front() * w, y1 = (s.rows.back() + 1.0) * w;
     const double cx = 0.5 * (x0 + x1), cy = 0.5 * (y0 + y1);
     const double b = 0.5 * std::hypot(x1 - x0, y1 - y0);
-    // The margin covers the rounding of the distances, each within a few ulps of 1.
-    const double radius = std::sqrt(grid_.nearest_distance2(cx, cy)) + 2.0 * b + 1e-12;
-    s.near.clear();
-    grid_.gather(cx, cy, radius, s.near);
+    // The margin's last term covers the rounding of the distances, each within a few ulps of 1.
+    grid_.near_points(cx, cy, 2.0 * b + 1e-12, s.near);
     s.gathered = true;
   }
 
