@@ -27,9 +27,9 @@ const std::vector<std::string> kMemoOrder = {
 // so a new generator is held to the contract as soon as it is registered.
 const std::vector<std::string> kRegistered = sequence_names();
 
-// Registry instances of the tabulated sequences hold 2^16 points (pmj02bn takes ~2 s to build),
-// so the many-seed tests build them with a small capacity; the registry's own instances are
-// tested for determinism and range below.
+// Registry instances of the tabulated sequences hold 2^16 points (the candidate searches make them
+// slow to build), so the many-seed tests build them with a small capacity; the registry's own
+// instances are tested for determinism and range below.
 std::unique_ptr<Sequence> make_small(const std::string& name, uint64_t seed, uint32_t capacity) {
   return make_sequence(name, seed, capacity);
 }

@@ -1,9 +1,11 @@
 // (0,2)-net property (Christensen 2018, Sec. 2; DESIGN.md "Randomizations and nets"): every
 // power-of-two prefix up to 2^16 and every aligned power-of-two block of Sobol' (unrandomized,
-// xor- and Owen-scrambled), pmj02 and pmj02bn puts exactly one point in each elementary
-// interval. Cranley-Patterson rotation breaks it: asserted, as the documented fact it is.
+// xor- and Owen-scrambled) and pmj02 puts exactly one point in each elementary interval; so do
+// pmj02bn's prefixes and their second halves. pmj's sub-square rule holds for both.
+// Cranley-Patterson rotation breaks the net property: asserted, as the documented fact it is.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <functional>
 #include <string>
 #include <vector>
@@ -81,10 +83,11 @@ TEST(Net, OwenScrambledSobolKeepsNets) {
                                "sobol-owen seed " + std::to_string(seed));
 }
 
-// pmj02 (Christensen et al. 2018) guarantees the power-of-two prefixes; the second half of each
-// prefix, [2^(m-1), 2^m), is then a (0,m-1,2)-net too (in every elementary interval of area
-// 2^-(m-1) the first half left exactly one of two sub-intervals free). Smaller aligned blocks are
-// not constrained by the 2018 algorithm (see tabulated.h), so they are not tested.
+// pmj02bn's stratum search (Christensen et al. 2018) guarantees the power-of-two prefixes; the
+// second half of each prefix, [2^(m-1), 2^m), is then a (0,m-1,2)-net too (in every elementary
+// interval of area 2^-(m-1) the first half left exactly one of two sub-intervals free). Smaller
+// aligned blocks are not constrained by the 2018 algorithm (see tabulated.h), so they are not
+// tested for it.
 void expect_prefixes_and_halves_are_nets(const std::vector<FixedPoint2>& points, int max_log2,
                                          const std::string& what) {
   for (int m = 0; m <= max_log2; ++m) {
@@ -97,22 +100,60 @@ void expect_prefixes_and_halves_are_nets(const std::vector<FixedPoint2>& points,
   }
 }
 
-TEST(Net, Pmj02IsAProgressiveNet) {
-  for (uint64_t seed : kStructureSeeds) {
-    const Pmj02 gen(seed, kCount);
-    expect_prefixes_and_halves_are_nets(first_points(gen, kCount), kMaxLog2,
-                                        "pmj02 seed " + std::to_string(seed));
-    // The pmj sub-square rule never had to be dropped for these seeds.
-    EXPECT_EQ(gen.rule_fallbacks(), 0u) << "pmj02 seed " << seed;
+// pmj's sub-square rule (Christensen et al. 2018, Sec. 3): the first k 4^n points, k = 1..4, put
+// k points in every square of side 2^-n, in distinct sub-squares of side 2^-(n+1), and the two
+// points at k = 2 in diagonally opposite ones. Checked for every n with 4^(n+1) <= points.size().
+void expect_sub_square_rule(const std::vector<FixedPoint2>& points, const std::string& what) {
+  int failures = 0;
+  for (int n = 0; (std::size_t{4} << (2 * n)) <= points.size(); ++n) {
+    const std::size_t squares = std::size_t{1} << (2 * n);
+    for (uint32_t k = 1; k <= 4; ++k) {
+      // Per square: a bit mask of the occupied sub-squares (bit 2 sx + sy) and the point count.
+      std::vector<uint8_t> mask(squares, 0), count(squares, 0);
+      for (std::size_t j = 0; j < k * squares; ++j) {
+        const uint64_t cx = points[j].x >> (31 - n), cy = points[j].y >> (31 - n);  // n+1 digits
+        const std::size_t sq = ((cx >> 1u) << n) | (cy >> 1u);
+        mask[sq] |= static_cast<uint8_t>(1u << (2 * (cx & 1u) + (cy & 1u)));
+        ++count[sq];
+      }
+      for (std::size_t sq = 0; sq < squares && failures <= 5; ++sq) {
+        const bool distinct = count[sq] == k && std::popcount(mask[sq]) == static_cast<int>(k);
+        const bool diagonal = k != 2 || mask[sq] == 0b1001 || mask[sq] == 0b0110;
+        if (!distinct || !diagonal) {
+          ADD_FAILURE() << what << ": first " << k << " x 4^" << n << " points: square " << sq
+                        << " holds " << int(count[sq]) << " points, sub-square mask "
+                        << int(mask[sq]);
+          ++failures;
+        }
+      }
+    }
   }
 }
 
+TEST(Net, Pmj02IsAProgressiveNet) {
+  // The xor construction (Helmer et al. 2021) makes every aligned block a net, as Sobol' has.
+  for (uint64_t seed : kStructureSeeds) {
+    const Pmj02 gen(seed, kCount);
+    expect_all_blocks_are_nets(first_points(gen, kCount), "pmj02 seed " + std::to_string(seed));
+  }
+}
+
+TEST(Net, Pmj02FollowsTheSubSquareRule) {
+  for (uint64_t seed : kStructureSeeds)
+    expect_sub_square_rule(first_points(Pmj02(seed, kCount), kCount),
+                           "pmj02 seed " + std::to_string(seed));
+}
+
+// pmj02bn (the 2018 stratum search with best candidates): prefixes and their halves are nets, the
+// sub-square rule held for every candidate of these seeds, and so it holds for the points.
 TEST(Net, Pmj02BlueNoiseIsAProgressiveNet) {
-  // Fewer points: pmj02bn costs ten candidate searches per point.
   for (uint64_t seed : {uint64_t{3}, uint64_t{77}}) {
-    const Pmj02BlueNoise gen(seed, 1u << 12);
-    expect_prefixes_and_halves_are_nets(first_points(gen, 1u << 12), 12,
-                                        "pmj02bn seed " + std::to_string(seed));
+    const std::string what = "pmj02bn seed " + std::to_string(seed);
+    const Pmj02BlueNoise gen(seed, kCount);
+    const std::vector<FixedPoint2> points = first_points(gen, kCount);
+    expect_prefixes_and_halves_are_nets(points, kMaxLog2, what);
+    EXPECT_EQ(gen.rule_fallbacks(), 0u) << what;
+    expect_sub_square_rule(points, what);
   }
 }
 

@@ -52,7 +52,7 @@ std::unique_ptr<Sequence> make_sequence(std::string_view name, uint64_t seed);
 // Same, for a caller that will use at most `max_count` points: tabulated sequences then build a
 // table of max_count points (rounded up to a power of two, at most 2^24) instead of 2^16. The
 // points do not depend on the table size (each table is a prefix of the larger ones), so this
-// only saves set-up time (pmj02bn: ~2 s for 2^16 points).
+// only saves set-up time (the candidate searches of best-candidate and pmj02bn dominate it).
 std::unique_ptr<Sequence> make_sequence(std::string_view name, uint64_t seed, uint32_t max_count);
 
 }  // namespace disklab::sequence

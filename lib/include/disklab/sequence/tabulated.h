@@ -55,21 +55,33 @@ class BestCandidate : public TabulatedSequence {
                          int candidates = kDefaultCandidates);
 };
 
-// Progressive multi-jittered (0,2) sequence (Christensen et al. 2018, Sec. 5). Point i with
-// 2^(M-1) <= i < 2^M goes into an elementary interval of area 2^-M left empty by points
-// 0..i-1, for all M+1 shapes, so every power-of-two prefix is a (0,m,2)-net, and so is every
-// second half [2^(M-1), 2^M) (it fills the complement of a net). Smaller aligned blocks are not
-// guaranteed to be nets (unlike Sobol'): see the note in tabulated.cpp. Its sub-square follows
-// pmj's rule (Sec. 3): at 2 * 4^n points the new point lies in the sub-square diagonally opposite
-// its parent's, then in the two remaining ones; within those constraints the strata are drawn at
-// random (a random descent over free x strata, a randomized depth-first search over y strata) and
-// the point is jittered uniformly in the finest cell. pmj02bn (`candidates` > 1): the valid
-// candidate farthest from the earlier points, as the paper's blue-noise variant.
+// Progressive multi-jittered (0,2) sequence (Christensen, Kensler and Kilpatrick 2018), built with
+// the stochastic construction of Helmer, Christensen and Kensler 2021 ("Stochastic Generation of
+// (t, s) Sample Sequences") in O(1) per point. Point i with 2^n <= i < 2^(n+1) copies the top n
+// binary digits of x from point i xor 2^n and those of y from point i xor d_n (d_n in
+// [2^n, 2^(n+1)): the index whose Sobol' y starts with n zeros), takes the complement of that
+// point's digit n+1, and draws the digits below. In Sobol' (0,2) those partners share exactly
+// these digits with point i, and the drawn digits sit where a nested uniform (Owen) scrambling
+// tree is visited first, so every run is an Owen-scrambled Sobol' sequence: every aligned block
+// of 2^m points is a (0,m,2)-net (prefixes, their halves and smaller blocks alike). pmj's
+// sub-square rule (Christensen et al. 2018, Sec. 3) follows: at 2 * 4^n points every square of
+// side 2^-n holds two points in diagonally opposite sub-squares, at 3 * 4^n three in distinct ones.
+//
+// pmj02bn (`candidates` > 1): the blue-noise variant of Christensen et al. 2018 (Sec. 6), built
+// with their stratum search instead: point i with 2^(M-1) <= i < 2^M goes into an elementary
+// interval of area 2^-M left empty by points 0..i-1, for all M+1 shapes, in a sub-square the pmj
+// rule allows; `candidates` such positions are drawn as the 2018 search draws them (a uniform
+// free x stratum that admits a y stratum, a random descent over the valid y strata, uniform jitter
+// in the finest cell) and the one farthest (toroidal distance) from all earlier points is kept.
+// So the sets at 2^m points are blue noise, not only their order. Every power-of-two prefix is a
+// (0,m,2)-net and so is its second half (it fills the complement of a net); smaller aligned blocks
+// are not guaranteed.
 class Pmj02 : public TabulatedSequence {
  public:
   static constexpr int kBlueNoiseCandidates = 10;
   explicit Pmj02(uint64_t seed, uint32_t capacity = kDefaultCapacity, int candidates = 1);
-  // How often the pmj sub-square rule had to be dropped to find a valid point (diagnostics).
+  // pmj02bn: how often a candidate had to drop the pmj sub-square rule to find a valid position
+  // (diagnostics; 0 for pmj02, whose construction always meets it).
   uint32_t rule_fallbacks() const { return rule_fallbacks_; }
 
  private:
