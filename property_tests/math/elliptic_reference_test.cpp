@@ -506,6 +506,68 @@ TEST(EllipticReference, SeriesTailsOfDegree9) {
   EXPECT_LT(rj7, 362);
 }
 
+// F's kernel (lib/src/math/elliptic_pi_dd_kernel.inc) in every copy this CPU runs, and F's
+// portable path, each faithfully rounded on both F tables (the copies' arguments: phi in
+// (0, pi/2], m in [0, 1]; ellint_f<double> runs one of them, tested above).
+TEST(EllipticReference, FKernelCopiesAndPortablePathFaithfulOnBothTables) {
+  namespace d = math::detail;
+  const auto kernels = supported_kernels();
+  for (const char* name : {"elliptic_f.csv", "elliptic_f_boost_inputs.csv"}) {
+    std::size_t rows_in_domain = 0;
+    for (const EllipticRow& row : read_elliptic_table(name, 2)) {
+      const double phi = row.inputs[0], m = row.inputs[1];
+      if (!(phi > 0 && phi <= elliptic_domain::kHalfPi && m >= 0 && m <= 1)) continue;
+      ++rows_in_domain;
+      const Real50 exact(row.value);
+      const double portable = d::ellint_f_core(phi, m, 1.0 - m);
+      EXPECT_TRUE(rounding_error(portable, exact).faithful)
+          << name << " portable: " << describe(row.inputs, portable, row);
+      for (const d::PiKernel k : kernels) {
+        const double own = d::ellint_f_dd(k, phi, m);
+        EXPECT_TRUE(rounding_error(own, exact).faithful)
+            << name << " " << d::pi_dd_kernel_name(k) << ": " << describe(row.inputs, own, row);
+        // With the caller's complement (exact here for m >= 0.5, Sterbenz): the same bits.
+        if (m >= 0.5) EXPECT_EQ(d::ellint_f_dd(k, phi, m, 1.0 - m, 0.0), own) << name;
+      }
+    }
+    EXPECT_GT(rows_in_domain, 100u) << name;
+  }
+}
+
+// The series of F's kernel: R_F(r_1^2, r_2^2, r_3^2) = (1 + G(e2, e3)) / mu for roots
+// r_j = mu (1 + d_j), sum d_j = 0, against 50-digit R_F at mu = 1 and |d_j| up to the kernel's
+// tolerance 0.1. Bound: the truncation beyond degree 13 is below 2^-63 there and the double
+// evaluation of |G| < 8e-4 rounds a few times at 2^-53 relative: 2^-59 absolute. A wrong
+// coefficient of degree up to about 10 exceeds it at |d| = 0.1 (its term is 1e-10 to 1e-17).
+TEST(EllipticReference, FKernelSeriesAgainst50Digits) {
+  namespace d = math::detail;
+  const auto kernels = supported_kernels();
+  if (kernels.empty()) GTEST_SKIP() << "this CPU lacks AVX2/FMA: F's kernel is not used";
+  const double kBound = std::ldexp(1.0, -59);
+  sequence::Pcg32 rng(2026, 16);
+  double worst = 0;
+  for (int i = 0; i < 2000; ++i) {
+    // d on the boundary of |d_j| <= 0.1 for half of the samples (the largest terms).
+    const double scale = i % 2 == 0 ? 0.1 : 0.1 * rng.next_double();
+    const double d0 = scale * (2 * rng.next_double() - 1), d1 = scale * (2 * rng.next_double() - 1);
+    if (std::fabs(d0 + d1) > 0.1) continue;  // |d_2| within the tolerance too
+    const Real50 D0(d0), D1(d1), D2 = -(D0 + D1);
+    const Real50 g_exact =
+        math::carlson_rf((1 + D0) * (1 + D0), (1 + D1) * (1 + D1), (1 + D2) * (1 + D2)) - 1;
+    const double p01 = d0 * d1, s01 = d0 + d1;
+    const double e2 = p01 - s01 * s01, e3 = -p01 * s01;
+    for (const d::PiKernel k : kernels) {
+      // The reference at the double e2, e3 actually passed: G is a polynomial in them, and the
+      // exact e2, e3 of d0, d1 differ by their rounding, which moves G by below 2^-60.
+      const double err = std::fabs(double(Real50(d::f_dd_series(k, e2, e3)) - g_exact));
+      worst = std::max(worst, err);
+      EXPECT_LE(err, kBound) << d::pi_dd_kernel_name(k) << " d0=" << d0 << " d1=" << d1;
+    }
+  }
+  std::printf("F kernel series vs 50 digits at |d| <= 0.1: max error %.2g (bound 2^-59 = %.2g)\n",
+              worst, kBound);
+}
+
 TEST(EllipticReference, MissingTableFailsLoudly) {
   EXPECT_THROW(read_elliptic_table("no_such_table.csv", 2), std::runtime_error);
 }

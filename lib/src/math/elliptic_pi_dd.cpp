@@ -1,5 +1,5 @@
-// Which compiled copy of the double-double Pi kernel (elliptic_pi_dd_kernel.inc) runs: the best
-// this CPU supports, chosen once during static initialisation.
+// Which compiled copy of the double-double Pi and F kernels (elliptic_pi_dd_kernel.inc) runs: the
+// best this CPU supports, chosen once during static initialisation.
 #include <limits>
 
 #include "elliptic_pi_dd_entry.h"
@@ -45,11 +45,15 @@ struct Copy {
   DoubleDouble (*atan)(DoubleDouble) noexcept;
   DoubleDouble (*log)(DoubleDouble) noexcept;
   DoubleDouble (*rc_minus_1)(DoubleDouble) noexcept;
+  double (*f_pairs)(double, double, DoubleDouble) noexcept;
+  FDdEntry f;
+  double (*f_series)(double, double) noexcept;
 };
 #if DISKLAB_PI_DD
-#define DL_COPY(ns)                                                     \
-  Copy {                                                                \
-    &ns::pi, &ns::pi, &ns::sincos, &ns::atan, &ns::log, &ns::rc_minus_1 \
+#define DL_COPY(ns)                                                                      \
+  Copy {                                                                                 \
+    &ns::pi, &ns::pi, &ns::sincos, &ns::atan, &ns::log, &ns::rc_minus_1, &ns::f, &ns::f, \
+        &ns::f_series                                                                    \
   }
 constexpr Copy kAvx2Copy = DL_COPY(pi_avx2), kAvx512Copy = DL_COPY(pi_avx512);
 #undef DL_COPY
@@ -69,6 +73,10 @@ PiDdEntry entry_of(PiKernel kernel) {
   const Copy* copy = copy_of(kernel);
   return copy != nullptr ? copy->pi : nullptr;
 }
+FDdEntry f_entry_of(PiKernel kernel) {
+  const Copy* copy = copy_of(kernel);
+  return copy != nullptr ? copy->f : nullptr;
+}
 
 // The best copy this CPU runs (initialised after cpu_support: same translation unit, later).
 PiKernel kernel_in_use = runs(PiKernel::kAvx512)    ? PiKernel::kAvx512
@@ -77,8 +85,9 @@ PiKernel kernel_in_use = runs(PiKernel::kAvx512)    ? PiKernel::kAvx512
 
 }  // namespace
 
-// Read by ellint_pi<double> on every call.
+// Read by ellint_pi<double> and ellint_f<double> on every call.
 PiDdEntry pi_dd_entry = entry_of(kernel_in_use);
+FDdEntry f_dd_entry = f_entry_of(kernel_in_use);
 
 PiKernel pi_dd_kernel() noexcept {
   return kernel_in_use;
@@ -104,6 +113,7 @@ bool use_pi_dd_kernel(PiKernel kernel) noexcept {
   if (kernel != PiKernel::kNone && !runs(kernel)) return false;
   kernel_in_use = kernel;
   pi_dd_entry = entry_of(kernel);
+  f_dd_entry = f_entry_of(kernel);
   return true;
 }
 
@@ -122,6 +132,23 @@ double ellint_pi_dd(PiKernel kernel, double n, double one_minus_n, double one_mi
 double ellint_pi_dd(PiKernel kernel, double n, double phi, double m) noexcept {
   const Copy* copy = copy_of(kernel);
   return copy != nullptr ? copy->pi(n, phi, m) : kNaN;
+}
+
+double ellint_f_dd(double phi, double m, double one_minus_m) noexcept {
+  return ellint_f_dd(kernel_in_use, phi, m, one_minus_m, 0.0);
+}
+double ellint_f_dd(PiKernel kernel, double phi, double m, double one_minus_m,
+                   double one_minus_m_lo) noexcept {
+  const Copy* copy = copy_of(kernel);
+  return copy != nullptr ? copy->f_pairs(phi, m, {one_minus_m, one_minus_m_lo}) : kNaN;
+}
+double ellint_f_dd(PiKernel kernel, double phi, double m) noexcept {
+  const Copy* copy = copy_of(kernel);
+  return copy != nullptr ? copy->f(phi, m) : kNaN;
+}
+double f_dd_series(PiKernel kernel, double e2, double e3) noexcept {
+  const Copy* copy = copy_of(kernel);
+  return copy != nullptr ? copy->f_series(e2, e3) : kNaN;
 }
 
 void pi_dd_sincos(PiKernel kernel, double phi, DoubleDouble& sin_phi,

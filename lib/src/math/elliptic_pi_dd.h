@@ -17,15 +17,22 @@ PiKernel pi_dd_kernel() noexcept;
 bool pi_dd_kernel_supported(PiKernel kernel) noexcept;    // compiled in, and this CPU runs it
 const char* pi_dd_kernel_name(PiKernel kernel) noexcept;  // "AVX2+FMA", ...
 bool pi_dd_kernel_available() noexcept;                   // pi_dd_kernel() != kNone
-// For tests and benchmarks: makes ellint_pi<double> run the given copy from now on (kNone: the
-// portable path). Not thread-safe (no evaluation may run meanwhile); false, and no change,
-// where the copy is not supported.
+// For tests and benchmarks: makes ellint_pi<double> and ellint_f<double> run the given copy from
+// now on (kNone: the portable paths). Not thread-safe (no evaluation may run meanwhile); false, and
+// no change, where the copy is not supported.
 bool use_pi_dd_kernel(PiKernel kernel) noexcept;
 // ellint_pi_dd (elliptic_legendre.h) in the given copy, with the complements as hi + lo pairs,
 // or formed exactly from n and m (the copy's pi_dd_entry). NaN where the copy is not supported.
 double ellint_pi_dd(PiKernel kernel, double n, double one_minus_n, double one_minus_n_lo,
                     double phi, double m, double one_minus_m, double one_minus_m_lo) noexcept;
 double ellint_pi_dd(PiKernel kernel, double n, double phi, double m) noexcept;
+// F's kernel (ellint_f_dd in elliptic_legendre.h) in the given copy: phi in (0, pi/2], m in
+// [0, 1], with 1 - m as a hi + lo pair or formed exactly from m; and its series G(e2, e3) (see
+// the kernel). NaN where the copy is not supported.
+double ellint_f_dd(PiKernel kernel, double phi, double m, double one_minus_m,
+                   double one_minus_m_lo) noexcept;
+double ellint_f_dd(PiKernel kernel, double phi, double m) noexcept;
+double f_dd_series(PiKernel kernel, double e2, double e3) noexcept;
 // The kernel's double-double elementary functions in the given copy, exported for their
 // accuracy tests (results as {hi, lo} pairs; NaN where the copy is not supported): sin and cos
 // of phi in [0, pi/2], atan of x >= 0, log of x >= 1, and R_C(1, 1 + e) - 1 for

@@ -1,4 +1,4 @@
-// The entry points of the two compiled copies of the double-double Pi kernel
+// The entry points of the two compiled copies of the double-double Pi and F kernels
 // (elliptic_pi_dd_kernel.inc): pi_avx2 (AVX2 + FMA) and pi_avx512 (the same plus AVX-512VL).
 // Private to lib/src/math; elliptic_pi_dd.cpp dispatches to them.
 #pragma once
@@ -18,7 +18,10 @@
   void sincos(double phi, DoubleDouble& sin_phi, DoubleDouble& cos_phi) noexcept; \
   DoubleDouble atan(DoubleDouble x) noexcept;                                     \
   DoubleDouble log(DoubleDouble x) noexcept;                                      \
-  DoubleDouble rc_minus_1(DoubleDouble e) noexcept;
+  DoubleDouble rc_minus_1(DoubleDouble e) noexcept;                               \
+  double f(double phi, double m, DoubleDouble one_minus_m) noexcept;              \
+  double f(double phi, double m) noexcept;                                        \
+  double f_series(double e2, double e3) noexcept;
 
 namespace disklab::math::detail {
 namespace pi_avx2 {

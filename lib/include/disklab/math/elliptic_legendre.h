@@ -42,13 +42,18 @@
 //              + sqrt(-n/((1-n)(m-n))) atan(sqrt(-n (m-n)/(1-n)) s c / Delta),
 //    three non-negative terms: no cancellation at any n < 0.
 //
-// PRECISION: the Carlson loops run in long double for Real = double (elliptic_carlson.h). F
-// carries s, c and the product s R_F in long double too (sincos_wide; s rounded to double alone
-// costs up to 1/2 ulp), so F is faithfully rounded, below 1 ulp of the exact value (max 0.52 on
-// both F tables: EllipticReference.FFaithfullyRoundedOnBothTables). Pi's portable path computes
+// PRECISION: the Carlson loops run in long double for Real = double (elliptic_carlson.h). F's
+// portable path carries s, c and the product s R_F in long double too (sincos_wide; s rounded to
+// double alone costs up to 1/2 ulp), so F is faithfully rounded, below 1 ulp of the exact value
+// (EllipticReference.FFaithfullyRoundedOnBothTables, on both paths). Pi's portable path computes
 // s, c, R_C and atan in long double.
 //
-// FAST PATH (Pi in double only): on x86-64 CPUs with AVX2 and FMA (checked once at run time;
+// FAST PATH (F and Pi in double only). F: on the same CPUs as Pi's kernel below, ellint_f<double>
+// with m in [0, 1] and 0 < |phi| <= pi/2 runs a double-double duplication on the square roots of
+// R_F's arguments with a degree-13 series in them (lib/src/math/elliptic_pi_dd_kernel.inc, with its
+// error bound: below 2^-55.8 relative before the one rounding, so faithfully rounded); phi beyond
+// pi/2 and m < 0 take the portable path. Speed: bench_elliptic, F/mixed/own vs own-portable.
+// Pi: on x86-64 CPUs with AVX2 and FMA (checked once at run time;
 // a second copy uses AVX-512VL where present), ellint_pi<double> with m in [0, 1] and phi in
 // (0, pi/2] runs a double-double version of the same loop (lib/src/math/elliptic_pi_dd_kernel.inc),
 // which also carries s, c, the first steps' R_C and the atan term in double-double; it stops the
@@ -254,7 +259,7 @@ inline W ellint_f_wide(W phi, Real m, Real one_minus_m) {
   return ellint_f_sc<Real>(s, c, m, one_minus_m);
 }
 
-// F at phi in [0, pi/2], m <= 1.
+// F at phi in [0, pi/2], m <= 1, on the portable path (x87 long double where it exists).
 template <class Real>
 inline Real ellint_f_core(Real phi, Real m, Real one_minus_m) {
   using W = work_t<Real>;
@@ -277,6 +282,26 @@ extern PiDdEntry pi_dd_entry;
 // taken as exact), phi in (0, pi/2], m in [0, 1], n <= 1, all finite. NaN where there is none.
 double ellint_pi_dd(double n, double one_minus_n, double one_minus_n_lo, double phi, double m,
                     double one_minus_m, double one_minus_m_lo) noexcept;
+
+// The double-double kernel for F in double (see FAST PATH above), the same copy as Pi's: F from
+// phi in (0, pi/2] and m in [0, 1] with 1 - m formed exactly (f_dd_entry; nullptr: none), or with
+// the caller's 1 - m taken as exact (ellint_f_dd, NaN where there is no kernel).
+using FDdEntry = double (*)(double phi, double m) noexcept;
+extern FDdEntry f_dd_entry;
+double ellint_f_dd(double phi, double m, double one_minus_m) noexcept;
+
+// F in double at phi in [0, pi/2] or [-pi/2, 0) (odd), m <= 1: the kernel where it runs (m in
+// [0, 1]; the caller's complement only where m > 0.5, as on the portable path, which forms
+// Delta^2 from m below that), else the portable path.
+inline double ellint_f_double(double phi, double m, double one_minus_m, bool exact_complement) {
+  const double a = phi < 0 ? -phi : phi;
+  double value;
+  if (f_dd_entry != nullptr && m >= 0 && a > 0)
+    value = (exact_complement || m <= 0.5) ? f_dd_entry(a, m) : ellint_f_dd(a, m, one_minus_m);
+  else
+    value = ellint_f_core(a, m, one_minus_m);
+  return phi < 0 ? -value : value;
+}
 
 // Whether these (already validated: phi in [0, pi/2], m <= 1, n <= 1) arguments are in the
 // kernel's domain. n = 0 stays on the portable path, which answers it with F itself
@@ -427,6 +452,10 @@ template <class Real>
 inline Real ellint_f(Real phi, Real m, Real one_minus_m) {
   using W = detail::work_t<Real>;
   if (!(m <= 1) || !(one_minus_m >= 0)) return detail::quiet_nan<Real>();
+  if constexpr (std::is_same_v<Real, double>) {
+    if (detail::in_phi_domain(phi) || detail::in_phi_domain(-phi))
+      return detail::ellint_f_double(phi, m, one_minus_m, false);
+  }
   if (detail::in_phi_domain(phi)) return detail::ellint_f_core(phi, m, one_minus_m);
   if (detail::in_phi_domain(-phi)) return -detail::ellint_f_core(-phi, m, one_minus_m);  // odd
   return detail::reduce_phi(
@@ -437,6 +466,11 @@ inline Real ellint_f(Real phi, Real m, Real one_minus_m) {
 // F(phi|m) = int_0^phi dt / sqrt(1 - m sin^2 t).
 template <class Real>
 inline Real ellint_f(Real phi, Real m) {
+  if constexpr (std::is_same_v<Real, double>) {
+    // The kernel forms 1 - m exactly itself.
+    if (m <= 1 && (detail::in_phi_domain(phi) || detail::in_phi_domain(-phi)))
+      return detail::ellint_f_double(phi, m, 1 - m, true);
+  }
   return ellint_f(phi, m, Real(1 - m));
 }
 
@@ -446,6 +480,11 @@ inline Real ellint_pi(Real n, Real one_minus_n, Real phi, Real m, Real one_minus
   if (!(m <= 1) || !(one_minus_m >= 0) || !(n <= 1) || !(one_minus_n >= 0))
     return detail::quiet_nan<Real>();
   using W = detail::work_t<Real>;
+  if constexpr (std::is_same_v<Real, double>) {
+    // Pi(0; phi|m) is F(phi|m), computed by F's own path (which may be F's kernel).
+    if (n == 0 && (detail::in_phi_domain(phi) || detail::in_phi_domain(-phi)))
+      return ellint_f(phi, m, one_minus_m);
+  }
   if (detail::in_phi_domain(phi))
     return detail::ellint_pi_core(n, one_minus_n, phi, m, one_minus_m);
   if (detail::in_phi_domain(-phi))  // odd
@@ -466,6 +505,8 @@ inline Real ellint_pi(Real n, Real phi, Real m) {
   if constexpr (std::is_same_v<Real, double>) {
     // The fast path takes the complements exactly (their rounding errors as lo parts, Knuth's
     // two-sum); for large |n| the rounding of 1 - n alone would be half an ulp of the result.
+    if (n == 0 && m <= 1 && (detail::in_phi_domain(phi) || detail::in_phi_domain(-phi)))
+      return ellint_f(phi, m);  // Pi(0; phi|m) = F(phi|m), by F's own path
     if (m <= 1 && n <= 1 && detail::in_phi_domain(phi)) {
       const detail::PiDdEntry kernel = detail::pi_dd_entry;
       if (kernel != nullptr && detail::pi_dd_domain(n, phi, m)) return kernel(n, phi, m);
