@@ -527,7 +527,9 @@ TEST(EllipticReference, FKernelCopiesAndPortablePathFaithfulOnBothTables) {
         EXPECT_TRUE(rounding_error(own, exact).faithful)
             << name << " " << d::pi_dd_kernel_name(k) << ": " << describe(row.inputs, own, row);
         // With the caller's complement (exact here for m >= 0.5, Sterbenz): the same bits.
-        if (m >= 0.5) EXPECT_EQ(d::ellint_f_dd(k, phi, m, 1.0 - m, 0.0), own) << name;
+        if (m >= 0.5) {
+          EXPECT_EQ(d::ellint_f_dd(k, phi, m, 1.0 - m, 0.0), own) << name;
+        }
       }
     }
     EXPECT_GT(rows_in_domain, 100u) << name;
