@@ -154,4 +154,49 @@ inline std::vector<SolidAngleRow> read_solid_angle_table(const std::filesystem::
   return rows;
 }
 
+// One row of projected_P.csv: a disk, a shading point, its receiver normal and the 45-digit
+// projected solid angle P with its quadrature's relative error estimate.
+struct ProjectedRow {
+  int id = 0;
+  std::string category;
+  double center[3] = {}, normal[3] = {}, point[3] = {}, receiver_normal[3] = {};
+  double radius = 0.0;
+  bool two_sided = false;
+  double distance = 0.0;    // |o - c| / r
+  bool straddles = false;   // the receiver's horizon plane cuts the disk
+  std::string p_text;       // the reference, all digits
+  double p = 0.0;           // the same rounded to double
+  double quad_error = 0.0;  // relative error estimate of the reference
+};
+
+// Reads projected_P.csv (the one reader of that table for the tests and `disklab accuracy`).
+inline std::vector<ProjectedRow> read_projected_table(const std::filesystem::path& path) {
+  const CsvTable t =
+      read_csv_table(path, {"id", "category",  "cx",       "cy",        "cz", "nx",        "ny",
+                            "nz", "radius",    "ox",       "oy",        "oz", "rx",        "ry",
+                            "rz", "two_sided", "distance", "straddles", "P",  "quad_error"});
+  std::vector<ProjectedRow> rows;
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    const auto num = [&](std::size_t i) { return t.number(r, i); };
+    ProjectedRow row;
+    row.id = static_cast<int>(num(0));
+    row.category = t.rows[r][1];
+    for (int k = 0; k < 3; ++k) {
+      row.center[k] = num(2 + k);
+      row.normal[k] = num(5 + k);
+      row.point[k] = num(9 + k);
+      row.receiver_normal[k] = num(12 + k);
+    }
+    row.radius = num(8);
+    row.two_sided = t.rows[r][15] == "1";
+    row.distance = num(16);
+    row.straddles = t.rows[r][17] == "1";
+    row.p_text = t.rows[r][18];
+    row.p = num(18);
+    row.quad_error = num(19);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
 }  // namespace disklab::reference

@@ -25,7 +25,8 @@
 // of S(t_r) / r^3 in cos 2s (the radial series' machinery), free of the O(a) terms that the
 // elementary form cancels for distant disks; clipped configurations (the disk straddles the
 // receiver's horizon) split the turn at the rim's horizon crossings and use the elementary
-// form, whose rounding grows like eps / a for small ellipses.
+// form, whose O(a) terms cancel down to P ~ a^3 for a small straddling ellipse: rounding
+// ~eps / a^2 relative (reference/projected_P.csv's straddle_far rows; an open defect, issue 19).
 #include <algorithm>
 #include <cmath>
 #include <optional>
