@@ -116,12 +116,27 @@ inline std::vector<EllipticRow> read_elliptic_table(const std::filesystem::path&
   return rows;
 }
 
-// One row of solid_angle.csv: a disk, a shading point and the 45-digit solid angle.
-struct SolidAngleRow {
+// The scene columns solid_angle.csv and projected_P.csv share, in the same positions: id,
+// category, cx..cz, nx..nz, radius, ox..oz (columns 0-11).
+struct DiskSceneColumns {
   int id = 0;
   std::string category;
   double center[3] = {}, normal[3] = {}, point[3] = {};
   double radius = 0.0;
+};
+inline void read_disk_scene(const CsvTable& t, std::size_t r, DiskSceneColumns& row) {
+  row.id = static_cast<int>(t.number(r, 0));
+  row.category = t.rows[r][1];
+  for (std::size_t k = 0; k < 3; ++k) {
+    row.center[k] = t.number(r, 2 + k);
+    row.normal[k] = t.number(r, 5 + k);
+    row.point[k] = t.number(r, 9 + k);
+  }
+  row.radius = t.number(r, 8);
+}
+
+// One row of solid_angle.csv: a disk, a shading point and the 45-digit solid angle.
+struct SolidAngleRow : DiskSceneColumns {
   bool two_sided = false;
   double distance = 0.0;   // |o - c| / r
   std::string omega_text;  // the reference, all digits
@@ -137,14 +152,7 @@ inline std::vector<SolidAngleRow> read_solid_angle_table(const std::filesystem::
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     const auto num = [&](std::size_t i) { return t.number(r, i); };
     SolidAngleRow row;
-    row.id = static_cast<int>(num(0));
-    row.category = t.rows[r][1];
-    for (int k = 0; k < 3; ++k) {
-      row.center[k] = num(2 + k);
-      row.normal[k] = num(5 + k);
-      row.point[k] = num(9 + k);
-    }
-    row.radius = num(8);
+    read_disk_scene(t, r, row);
     row.two_sided = t.rows[r][12] == "1";
     row.distance = num(13);
     row.omega_text = t.rows[r][14];
@@ -156,11 +164,8 @@ inline std::vector<SolidAngleRow> read_solid_angle_table(const std::filesystem::
 
 // One row of projected_P.csv: a disk, a shading point, its receiver normal and the 45-digit
 // projected solid angle P with its quadrature's relative error estimate.
-struct ProjectedRow {
-  int id = 0;
-  std::string category;
-  double center[3] = {}, normal[3] = {}, point[3] = {}, receiver_normal[3] = {};
-  double radius = 0.0;
+struct ProjectedRow : DiskSceneColumns {
+  double receiver_normal[3] = {};
   bool two_sided = false;
   double distance = 0.0;    // |o - c| / r
   bool straddles = false;   // the receiver's horizon plane cuts the disk
@@ -179,15 +184,9 @@ inline std::vector<ProjectedRow> read_projected_table(const std::filesystem::pat
   for (std::size_t r = 0; r < t.rows.size(); ++r) {
     const auto num = [&](std::size_t i) { return t.number(r, i); };
     ProjectedRow row;
-    row.id = static_cast<int>(num(0));
-    row.category = t.rows[r][1];
-    for (int k = 0; k < 3; ++k) {
-      row.center[k] = num(2 + k);
-      row.normal[k] = num(5 + k);
-      row.point[k] = num(9 + k);
+    read_disk_scene(t, r, row);
+    for (std::size_t k = 0; k < 3; ++k)
       row.receiver_normal[k] = num(12 + k);
-    }
-    row.radius = num(8);
     row.two_sided = t.rows[r][15] == "1";
     row.distance = num(16);
     row.straddles = t.rows[r][17] == "1";
