@@ -56,7 +56,8 @@ def main():
     mse = {}
     with open(a.table, newline="") as f:
         for r in csv.DictReader(f):
-            if r["sequence"] == a.sequence:
+            # The table also holds the shadowed pixels' rows: the label is the image's MSE.
+            if r["sequence"] == a.sequence and r.get("region", "image") == "image":
                 mse[r["map"]] = float(r["mse"])
     errs = np.abs(imgs - ref[None, :, :])
     positive = errs[errs > 0]
