@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Contract of `disklab accuracy` (verify/accuracy.cpp): the files it writes, their CSV headers,
 # the targets it reports (production solid angle <= 1e-14 at every decade, own F/Pi <= 2 ulp),
-# the visible loss of the printed eqs. (19)/(11), the projected solid angle P's rows (unclipped
-# <= 1e-14, clipped within max(1e-14, 64 eps pi a^2 / P) for a >= 5e-3), the PNG (when matplotlib is there), Markdown
-# on stdout without --out, and exit 2 with one stderr line for bad input.
+# the visible loss of the printed eqs. (19)/(11), the projected solid angle P's rows (every row,
+# unclipped and clipped, <= 1e-14), the PNG (when matplotlib is there), Markdown on stdout without
+# --out, and exit 2 with one stderr line for bad input.
 # Usage: bash accuracy_contract.sh <path-to-disklab>
 set -u
 DISKLAB=${1:?usage: accuracy_contract.sh <path-to-disklab>}
@@ -17,8 +17,7 @@ PRODUCTION_TARGET=1e-14  # relative error of the production solid angle, every c
 OWN_MAX_ULP=2            # own F and Pi against the 50-digit tables
 PRINTED_LOSS_AT_LEAST=1e-6  # worst error of eq. (19) as printed over 1e-6..1e8 radii: the
 # cancellation grows ~2 digits per decade, so far rows must show it (DESIGN.md Sec. 3)
-PROJECTED_TARGET=1e-14  # relative error of P (issue 19), unclipped rows; clipped rows are held to
-# the documented rounding bound of the clipped form, max(1e-14, 64 eps pi a^2 / P), per row
+PROJECTED_TARGET=1e-14  # relative error of P (issue 19), every row, unclipped and clipped
 PROJECTED_MIN_ROWS=100  # projected_P.csv: 145 rows, 1e-6 .. 1e8 radii, straddling included
 
 header_of() { grep -v '^#' "$1" | head -1; }
@@ -100,7 +99,7 @@ for r in ell:
 # Projected solid angle P: the summary's forms, each row within its bound (recomputed here from
 # value and reference), the summary's maxima and counts equal to the rows'.
 psum = {r["form"]: r for r in rows("projected_accuracy.csv")}
-if set(psum) != {"unclipped", "clipped", "clipped_small", "all"}:
+if set(psum) != {"unclipped", "clipped", "all"}:
     bad.append("projected_accuracy.csv forms: %s" % sorted(psum))
 prow = rows("projected_accuracy_rows.csv")
 if len(prow) < pmin:
@@ -108,13 +107,15 @@ if len(prow) < pmin:
 dist = [float(r["distance"]) for r in prow]
 if not dist or min(dist) > 2e-6 or max(dist) < 0.5e8:
     bad.append("projected rows do not span 1e-6 .. 1e8 radii")
-# clipped_small: clipped rows with a < 5e-3, where the documented bound fails (an open defect of
-# projected.h): reported, their bound not required.
-byform = {"unclipped": [], "clipped": [], "clipped_small": []}
+# Every form is held to the target (clipped_lost, P > 0 but no map, counts as clipped).
+byform = {"unclipped": [], "clipped": []}
 for r in prow:
     if float(r["reference"]) == 0:
         if float(r["value"]) != 0 or r["form"] != "none":
             bad.append("projected row %s: reference 0, P %s (%s)" % (r["id"], r["value"], r["form"]))
+        continue
+    if r["form"] == "clipped_lost":
+        bad.append("projected row %s: P > 0 but no map" % r["id"])
         continue
     if r["form"] not in byform:
         bad.append("projected row %s: form %s with a nonzero reference" % (r["id"], r["form"]))
@@ -124,13 +125,11 @@ for r in prow:
     if not math.isclose(rel, float(r["rel_error"]), rel_tol=1e-3, abs_tol=1e-18):
         bad.append("projected row %s: rel_error %s, recomputed %g" % (r["id"], r["rel_error"], rel))
     bound = float(r["bound"])
-    if r["form"] == "unclipped" and bound != ptarget:
-        bad.append("projected row %s: unclipped bound %g != %g" % (r["id"], bound, ptarget))
-    if r["form"] == "clipped" and bound < ptarget:
-        bad.append("projected row %s: clipped bound %g below the target" % (r["id"], bound))
+    if bound != ptarget:
+        bad.append("projected row %s: bound %g != %g" % (r["id"], bound, ptarget))
     if r["within_bound"] != ("yes" if float(r["rel_error"]) <= bound else "no"):
         bad.append("projected row %s: within_bound '%s' contradicts %s <= %s" % (r["id"], r["within_bound"], r["rel_error"], r["bound"]))
-    if r["form"] != "clipped_small" and not float(r["rel_error"]) <= bound:
+    if not float(r["rel_error"]) <= bound:
         bad.append("projected row %s (%s, %s): rel %s > bound %s" % (r["id"], r["category"], r["form"], r["rel_error"], r["bound"]))
     byform[r["form"]].append(float(r["rel_error"]))
 if not byform["clipped"] or not any(r["straddles"] == "1" for r in prow):
@@ -143,10 +142,11 @@ for form, errs in byform.items():
         bad.append("projected %s: summary max %s / %s rows != rows' %g / %d" % (form, s["max_rel"], s["rows"], max(errs), len(errs)))
     if not math.isclose(float(s["mean_rel"]), sum(errs) / len(errs), rel_tol=1e-9, abs_tol=1e-30):
         bad.append("projected %s: mean %s != %g" % (form, s["mean_rel"], sum(errs) / len(errs)))
-    if form != "clipped_small" and int(s["rows_over_bound"]) != 0:
+    if int(s["rows_over_bound"]) != 0:
         bad.append("projected %s: %s rows over their bound" % (form, s["rows_over_bound"]))
-if "unclipped" in psum and not float(psum["unclipped"]["max_rel"]) <= ptarget:
-    bad.append("projected unclipped max %s > %g" % (psum["unclipped"]["max_rel"], ptarget))
+for form in ("unclipped", "clipped", "all"):
+    if form in psum and not float(psum[form]["max_rel"]) <= ptarget:
+        bad.append("projected %s max %s > %g" % (form, psum[form]["max_rel"], ptarget))
 for b in bad:
     print(b)
 sys.exit(1 if bad else 0)

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "disklab/ellipse/any_map.h"
+#include "disklab/ellipse/contracts.h"
 #include "disklab/ellipse/projected.h"
 #include "disklab/math/constants.h"
 #include "disklab/sequence/random.h"
@@ -78,34 +79,17 @@ ellipse::ProjectedMap make(const Config& c) {
   return ellipse::ProjectedMap::make(c.disk, c.point, c.receiver_normal);
 }
 
-// Tolerances of P against the 50-digit reference table (reference/projected_P.csv, which holds
-// this suite's configurations as its "suite" rows: the table subsumes the quadrature this test
-// ran itself until 2026-12-02, the same code now in reference/generate/projected_quadrature.h),
-// in one place. Unclipped, P = pi a b n_z with a, b to a few ulps: the issue's 1e-14. Clipped,
-// the bound documented in the README, 64 eps pi a^2 / P relative, argued from elementary pieces
-// of O(pi a^2) that cancel down to P (below 1e-14 where the disk fills much of the sky, ~1e-12
-// for a = 0.05 straddling the horizon); where it fails, see kClippedBoundMinA.
+// Tolerance of P against the 50-digit reference table (reference/projected_P.csv, which holds
+// this suite's configurations as its "suite" rows): the issue's 1e-14 on every row. Unclipped,
+// P = pi a b n_z with a, b to a few ulps and n_z compensated. Clipped, the reduced boundary form
+// (projected.h) sums terms of the size of P itself, each to a few ulps, even where a small
+// ellipse straddles the horizon (P ~ a^3); the elementary form it replaced lost eps / a^2 there.
 constexpr double kProjectedTarget = 1e-14;
-constexpr double kClippedRoundingUlps = 64.0;
-double projected_bound(const ellipse::ProjectedMap& m) {
-  return m.clipped ? std::max(kProjectedTarget, kClippedRoundingUlps *
-                                                    std::numeric_limits<double>::epsilon() *
-                                                    disklab::math::kPi * m.g.a * m.g.a / m.P)
-                   : kProjectedTarget;
-}
-
-// The clipped form's bound above is argued for, and holds on, the table's straddling rows with
-// a >= 0.01; on every one with a <= 1e-3 it fails: the clipped pieces are O(a), not O(a^2), so
-// the error grows like eps a / P ~ eps / a^2 (2e-4 at a = 1e-6; at a = 1e-8 P comes out <= 0
-// and the map is invalid). An open defect of projected.h (issue 19), not a tolerance: those rows
-// are reported here and held to the bound by the DISABLED_ test below.
-constexpr double kClippedBoundMinA = 5e-3;
 
 struct TableResult {
   const disklab::reference::ProjectedRow* row = nullptr;
   ellipse::ProjectedMap map;
-  double rel = 0.0, bound = 0.0;
-  bool small_clipped = false;  // clipped (or lost) with a < kClippedBoundMinA
+  double rel = 0.0;
 };
 
 std::vector<TableResult> evaluate_table(const std::vector<disklab::reference::ProjectedRow>& rows) {
@@ -124,8 +108,6 @@ std::vector<TableResult> evaluate_table(const std::vector<disklab::reference::Pr
             ? static_cast<double>(
                   std::fabs(static_cast<long double>(r.map.projected_solid_angle()) - ref) / ref)
             : 0.0;
-    r.bound = r.map.valid() ? projected_bound(r.map) : kProjectedTarget;
-    r.small_clipped = ref > 0 && (r.map.clipped || !r.map.valid()) && r.map.g.a < kClippedBoundMinA;
     out.push_back(r);
   }
   return out;
@@ -137,13 +119,12 @@ std::vector<disklab::reference::ProjectedRow> projected_table() {
 }
 
 TEST(Projected, ProjectedSolidAngleMatchesTheReferenceTable) {
-  // Every row of reference/projected_P.csv (1e-6 to 1e8 radii, tilted, straddling, grazing,
-  // scaled, random) within projected_bound, but the small clipped ones (kClippedBoundMinA),
-  // which are printed; rows with P = 0 give no map. Rows above the issue's 1e-14 are printed.
+  // Every row of reference/projected_P.csv (1e-6 to 1e8 radii, tilted, straddling near and far,
+  // grazing, scaled, random) within 1e-14; rows with P = 0 give no map. Prints the worst per form.
   const auto rows = projected_table();
   ASSERT_GE(rows.size(), 100u);
-  int unclipped = 0, clipped = 0, small = 0, over = 0;
-  double worst_unclipped = 0.0, worst_clipped = 0.0, worst_small = 0.0;
+  int unclipped = 0, clipped = 0, small_clipped = 0;
+  double worst_unclipped = 0.0, worst_clipped = 0.0;
   for (const TableResult& r : evaluate_table(rows)) {
     const auto& t = *r.row;
     const ellipse::ProjectedMap& m = r.map;
@@ -155,42 +136,77 @@ TEST(Projected, ProjectedSolidAngleMatchesTheReferenceTable) {
       EXPECT_EQ(m.projected_solid_angle(), 0.0) << where;
       continue;
     }
-    if (r.small_clipped) {
-      ++small;
-      worst_small = std::max(worst_small, r.rel);
-      std::printf(
-          "  small clipped (open defect): %s distance %.3g a %.3g rel %.2e (bound %.2e)%s\n",
-          where.c_str(), t.distance, m.g.a, r.rel, r.bound, m.valid() ? "" : " no map");
-      continue;
-    }
-    EXPECT_TRUE(m.valid()) << where;
+    ASSERT_TRUE(m.valid()) << where;
     (m.clipped ? clipped : unclipped) += 1;
+    if (m.clipped && m.g.a < 5e-3) ++small_clipped;
     double& worst = m.clipped ? worst_clipped : worst_unclipped;
     worst = std::max(worst, r.rel);
-    if (r.rel > kProjectedTarget) {
-      ++over;
-      std::printf("  above 1e-14: %s distance %.3g a %.3g rel %.2e (bound %.2e)%s\n", where.c_str(),
-                  t.distance, m.g.a, r.rel, r.bound, m.clipped ? " clipped" : "");
-    }
-    EXPECT_LE(r.rel, r.bound) << where << " distance " << t.distance << " clipped " << m.clipped
-                              << " P " << m.P << " reference " << t.p_text;
+    EXPECT_LE(r.rel, kProjectedTarget)
+        << where << " distance " << t.distance << " a " << m.g.a << " clipped " << m.clipped
+        << " P " << m.P << " reference " << t.p_text;
   }
-  std::printf(
-      "  %zu rows: %d unclipped (worst %.2e), %d clipped with a >= %.0e (worst %.2e, %d "
-      "above 1e-14), %d small clipped (worst %.2e)\n",
-      rows.size(), unclipped, worst_unclipped, clipped, kClippedBoundMinA, worst_clipped, over,
-      small, worst_small);
+  std::printf("  %zu rows: %d unclipped (worst %.2e), %d clipped (worst %.2e; %d with a < 5e-3)\n",
+              rows.size(), unclipped, worst_unclipped, clipped, worst_clipped, small_clipped);
   EXPECT_GT(unclipped, 0);
-  EXPECT_GT(clipped, 0);
+  // The table must exercise what was hard: small ellipses straddling the horizon (1e3 to 1e8
+  // radii away), where the previous elementary form lost eps / a^2.
+  EXPECT_GE(small_clipped, 8);
 }
 
-TEST(Projected, DISABLED_SmallClippedEllipsesWithinTheDocumentedBound) {
-  // The rows the test above leaves out: fails until projected.h's clipped form is fixed.
-  for (const TableResult& r : evaluate_table(projected_table())) {
-    if (!r.small_clipped) continue;
-    EXPECT_TRUE(r.map.valid()) << "row " << r.row->id;
-    EXPECT_LE(r.rel, r.bound) << "row " << r.row->id << " (" << r.row->category << ") a "
-                              << r.map.g.a;
+// Small ellipses straddling the receiver's horizon, 1e4 to 1e8 radii away (a = 1e-4 .. 1e-8):
+// P ~ a^3 there, the case the reduced boundary form exists for. Exact inputs on the horizon
+// (c - o and n_o representable) and a tilted one with rounded inputs.
+std::vector<Config> small_straddling_configs() {
+  return {
+      {"straddle-1e4",
+       {Vec3(1e4, 0, 0.25), Vec3(-1, 0, 0), 1.0, false},
+       Vec3::Zero(),
+       Vec3::UnitZ()},
+      {"straddle-1e6-below",
+       {Vec3(1e6, 0, -0.3), Vec3(-1, 0, 0), 1.0, false},
+       Vec3::Zero(),
+       Vec3::UnitZ()},
+      {"straddle-1e8-tilted",
+       {Vec3(6e7, 8e7, 0.3), Vec3(-0.6, -0.8, 0.5), 1.0, false},
+       Vec3::Zero(),
+       Vec3(0.8, -0.6, 0.5)},
+  };
+}
+
+TEST(Projected, SmallStraddlingEllipsesAreSampledConsistently) {
+  // Every sample valid, inside the disk's solid angle and above the horizon (in R_e, where the
+  // map works: the world direction's rounding, ~eps, is ~eps / a of these cosines), meeting the
+  // contracts (ellipse/contracts.h); and the map's two fractions read back from the local
+  // direction. u.x goes through the cumulative C(s) / P and back: with C's terms as small as P each
+  // costs a few ulps of P, and s's rounding moves C by ~eps s C' ~ eps P: kAzimuthRoundTrip. u.y
+  // goes through F(t) on the meridian; near the horizon (kind 3's t_lo) F is flat, so t -> u.y is
+  // well conditioned there: the same bound.
+  constexpr double kAzimuthRoundTrip = 1e-12;
+  for (const Config& c : small_straddling_configs()) {
+    const ellipse::ProjectedMap m = make(c);
+    const auto any =
+        ellipse::AnyMap::make(ellipse::MapKind::projected, c.disk, c.point, c.receiver_normal);
+    ASSERT_TRUE(m.valid()) << c.name;
+    EXPECT_TRUE(m.clipped) << c.name;
+    EXPECT_LT(m.g.a, 2e-4) << c.name;
+    disklab::sequence::Pcg32 rng(17);
+    double worst_x = 0.0, worst_y = 0.0;
+    for (int i = 0; i < 20000; ++i) {
+      const Point2 u{rng.next_double(), rng.next_double()};
+      const ellipse::EllipseSample smp = m.sample(u);
+      ASSERT_TRUE(smp.valid) << c.name << " u " << u.x << "," << u.y;
+      EXPECT_TRUE(m.g.contains(smp.direction)) << c.name;
+      EXPECT_GT(smp.local.dot(m.n), 0.0) << c.name;
+      // The contracts' checker: pdf(direction) within the cosine's resolution, among others.
+      EXPECT_EQ(ellipse::check_sample(any, smp), ellipse::Violation::none) << c.name;
+      const Point2 back = m.invert_local(smp.local);
+      worst_x = std::max(worst_x, std::abs(back.x - u.x));
+      worst_y = std::max(worst_y, std::abs(back.y - u.y));
+    }
+    std::printf("  %s: a %.2g P %.3g, round trip u.x %.2e u.y %.2e\n", c.name.c_str(), m.g.a, m.P,
+                worst_x, worst_y);
+    EXPECT_LE(worst_x, kAzimuthRoundTrip) << c.name;
+    EXPECT_LE(worst_y, kAzimuthRoundTrip) << c.name;
   }
 }
 
@@ -324,11 +340,16 @@ TEST(Projected, ChiSquareAgainstBinsOfTheProjectedMeasure) {
   // Sidak-corrected 1e-4.
   using Rule = boost::math::quadrature::gauss<double, 8>;
   constexpr int kS = 8, kF = 8, kSamples = 100000;
-  const auto cfgs = configs();
+  // The small straddling ellipses are included: their bins are integrated in the same R_e
+  // coordinates, where the cosine is O(a) and no term cancels.
+  auto cfgs = configs();
+  for (const Config& c : small_straddling_configs())
+    cfgs.push_back(c);
   const double alpha = disklab::test::sidak_alpha(1e-4, cfgs.size());
   for (const Config& c : cfgs) {
     const ellipse::ProjectedMap m = make(c);
-    if (m.g.a < 1e-3) continue;  // Gauss in s and t at the scale of a distant ellipse: skip
+    // Gauss in s and t at the scale of a distant unclipped ellipse: skip
+    if (m.g.a < 1e-3 && !m.clipped) continue;
     std::vector<double> s_edges;
     if (m.clipped) {
       for (int i = 0; i < m.pieces.count; ++i) {

@@ -46,17 +46,16 @@ struct Stat {
 
 ProjectedAccuracy projected_accuracy(const std::filesystem::path& reference_dir) {
   const auto rows = reference::read_projected_table(reference_dir / "projected_P.csv");
-  constexpr double kEps = std::numeric_limits<double>::epsilon();
   std::ostringstream rcsv;
   rcsv << "# Projected solid angle P per row of reference/projected_P.csv (50-digit chord "
           "quadrature, no ellipse formula).\n"
        << "# rel_error = |P - reference| / reference in long double; bound = "
-       << fmt17(kProjectedTarget) << " unclipped, max(" << fmt17(kProjectedTarget)
-       << ", 64 eps pi a^2 / P) clipped; rows whose reference is 0 have an empty rel_error and "
-          "must give exactly 0.\n"
+       << fmt17(kProjectedTarget)
+       << " (issue 19's target) for every form; form clipped_lost: P > 0 but no map; rows whose "
+          "reference is 0 have an empty rel_error and must give exactly 0.\n"
        << "id,category,distance,straddles,form,value,reference,rel_error,bound,over_target,"
           "within_bound\n";
-  Stat unclipped, clipped, small;
+  Stat unclipped, clipped;
   std::vector<std::string> over;  // rows above the target: "id (category, distance, error)"
   int degenerate = 0, degenerate_exact = 0;
   for (const reference::ProjectedRow& t : rows) {
@@ -70,10 +69,9 @@ ProjectedAccuracy projected_accuracy(const std::filesystem::path& reference_dir)
     const ellipse::ProjectedMap m = ellipse::ProjectedMap::make(disk, o, n_o);
     const double value = m.projected_solid_angle();
     const long double reference = std::strtold(t.p_text.c_str(), nullptr);
-    // A row with P > 0 but no map (P came out <= 0) counts with the small clipped ones.
-    const bool is_small =
-        reference > 0 && (m.clipped || !m.valid()) && m.g.a < kProjectedClippedBoundMinA;
-    const std::string form = is_small     ? "clipped_small"
+    // A row with P > 0 but no map (P came out <= 0) counts with the clipped ones, as lost.
+    const bool lost = reference > 0 && !m.valid();
+    const std::string form = lost         ? "clipped_lost"
                              : !m.valid() ? "none"
                              : m.clipped  ? "clipped"
                                           : "unclipped";
@@ -91,14 +89,8 @@ ProjectedAccuracy projected_accuracy(const std::filesystem::path& reference_dir)
     const long double d = (long double)value - reference;
     double rel = double((d < 0 ? -d : d) / reference);
     if (std::isnan(rel)) rel = INFINITY;  // a NaN result counts as the worst possible error
-    const double bound = m.valid() && m.clipped
-                             ? std::max(kProjectedTarget, kProjectedClippedRoundingUlps * kEps *
-                                                              math::kPi * m.g.a * m.g.a / m.P)
-                             : kProjectedTarget;
-    (is_small                 ? small
-     : m.valid() && m.clipped ? clipped
-                              : unclipped)
-        .add(rel, bound, t.id, t.category, t.distance);
+    const double bound = kProjectedTarget;
+    (lost || m.clipped ? clipped : unclipped).add(rel, bound, t.id, t.category, t.distance);
     if (rel > kProjectedTarget)
       over.push_back(std::to_string(t.id) + " (" + t.category + ", " + sci(t.distance) +
                      " radii, " + sci(rel) + ")");
@@ -108,28 +100,22 @@ ProjectedAccuracy projected_accuracy(const std::filesystem::path& reference_dir)
   ProjectedAccuracy out;
   out.unclipped_max = unclipped.max;
   out.clipped_max = clipped.max;
-  out.clipped_small_max = small.max;
-  out.clipped_small_over_bound = small.over_bound;
-  out.rows_over_target = unclipped.over_target + clipped.over_target + small.over_target;
+  out.rows_over_target = unclipped.over_target + clipped.over_target;
   out.within_bounds = unclipped.over_bound == 0 && clipped.over_bound == 0 &&
-                      unclipped.max <= kProjectedTarget && degenerate_exact == degenerate &&
-                      unclipped.rows > 0 && clipped.rows > 0;
+                      degenerate_exact == degenerate && unclipped.rows > 0 && clipped.rows > 0;
 
   Stat all = unclipped;
-  for (const Stat* s : {&clipped, &small}) {
-    all.rows += s->rows, all.sum += s->sum, all.over_target += s->over_target,
-        all.over_bound += s->over_bound;
-    if (!(s->max <= all.max))
-      all.max = s->max, all.worst_id = s->worst_id, all.worst_category = s->worst_category,
-      all.worst_distance = s->worst_distance;
-  }
+  all.rows += clipped.rows, all.sum += clipped.sum, all.over_target += clipped.over_target,
+      all.over_bound += clipped.over_bound;
+  if (!(clipped.max <= all.max))
+    all.max = clipped.max, all.worst_id = clipped.worst_id,
+    all.worst_category = clipped.worst_category, all.worst_distance = clipped.worst_distance;
 
   std::ostringstream scsv;
   scsv << "# Relative error of ProjectedMap's P against reference/projected_P.csv (50 digits), "
           "by form. Target "
        << fmt17(kProjectedTarget)
-       << "; clipped rows are held to max(target, 64 eps pi a^2 / P), the documented rounding "
-          "bound of the clipped form.\n"
+       << " for every form (clipped: the disk straddles the receiver's horizon).\n"
        << "form,rows,max_rel,mean_rel,rows_over_target,rows_over_bound,worst_id,worst_category,"
           "worst_distance\n";
   std::ostringstream md;
@@ -138,12 +124,9 @@ ProjectedAccuracy projected_accuracy(const std::filesystem::path& reference_dir)
      << " configurations, 1e-6 to 1e8 radii, tilted, straddling and grazing receivers; 50-digit "
         "chord quadrature that uses no ellipse formula). Target <= "
      << sci(kProjectedTarget)
-     << "; the clipped form (disk straddling the receiver's horizon) is held to its documented "
-        "rounding bound max(target, 64 eps pi a^2 / P), which exceeds the target for small "
-        "straddling ellipses (P ~ a^3 there). `clipped_small`: clipped rows with a < "
-     << sci(kProjectedClippedBoundMinA)
-     << ", where that bound does not hold (the clipped pieces are O(a), the error grows like "
-        "eps / a^2): an open defect, reported here and not part of the exit status.\n\n"
+     << " for both forms: unclipped (P = pi a b n_z) and clipped (the disk straddles the "
+        "receiver's horizon; the reduced boundary form, whose terms are O(P) even for small "
+        "ellipses, P ~ a^3).\n\n"
      << "| form | rows | max rel. error | mean rel. error | rows > " << sci(kProjectedTarget)
      << " | rows over their bound | worst row |\n|---|---:|---:|---:|---:|---:|---|\n";
   auto emit = [&](const char* name, const Stat& s) {
@@ -159,7 +142,6 @@ ProjectedAccuracy projected_accuracy(const std::filesystem::path& reference_dir)
   };
   emit("unclipped", unclipped);
   emit("clipped", clipped);
-  emit("clipped_small", small);
   emit("all", all);
   md << "\n"
      << degenerate << " row(s) with P = 0 (behind a one-sided disk, wholly below the "
@@ -172,9 +154,7 @@ ProjectedAccuracy projected_accuracy(const std::filesystem::path& reference_dir)
   }
   md << "\n\n**Verdict:** P " << (out.within_bounds ? "is" : "is NOT")
      << " within its bound at every unclipped and clipped configuration (unclipped worst "
-     << sci(unclipped.max) << ", clipped worst " << sci(clipped.max) << "). **Open defect:** "
-     << small.over_bound << " of " << small.rows << " small clipped rows exceed the documented "
-     << "bound (worst " << sci(small.max) << ").\n\n"
+     << sci(unclipped.max) << ", clipped worst " << sci(clipped.max) << ").\n\n"
      << "CSV: `projected_accuracy.csv` (this table), `projected_accuracy_rows.csv` (every row).\n";
   out.markdown = md.str();
   out.summary_csv = scsv.str();

@@ -2,7 +2,7 @@
 // Accuracy of the projected solid angle P of ellipse/projected.h against the committed 50-digit
 // table (reference/projected_P.csv: chord quadrature in cpp_bin_float_50, no ellipse formula),
 // split by the map's form: unclipped (P = pi a b n_z) and clipped (the disk straddles the
-// receiver's horizon; elementary pieces that cancel down to P).
+// receiver's horizon; the reduced boundary form, whose pieces are O(P) for small ellipses).
 #include <filesystem>
 #include <string>
 
@@ -10,24 +10,15 @@ namespace disklab::cli {
 
 // Issue 19's target: relative error <= 1e-14 against the reference at every configuration.
 inline constexpr double kProjectedTarget = 1e-14;
-// The clipped form's documented rounding bound (README, projected-solid-angle section):
-// 64 eps pi a^2 / P relative; each row is held to max(target, that bound).
-inline constexpr double kProjectedClippedRoundingUlps = 64.0;
-// Below this a, clipped rows are reported apart ("clipped_small") and do not set the exit code:
-// there the bound fails (the clipped pieces are O(a), the error grows like eps / a^2), an open
-// defect of projected.h (issue 19), the same split as property_tests/ellipse/projected_test.cpp.
-inline constexpr double kProjectedClippedBoundMinA = 5e-3;
 
 struct ProjectedAccuracy {
-  std::string markdown;              // a Markdown section: per-form table, rows above the target
-  std::string summary_csv;           // projected_accuracy.csv: one line per form and in total
-  std::string rows_csv;              // projected_accuracy_rows.csv: one line per table row
-  double unclipped_max = 0;          // worst relative error of the unclipped form
-  double clipped_max = 0;            // worst relative error of the clipped form, a >= the split
-  double clipped_small_max = 0;      // the same for the small clipped rows (or lost: infinity)
-  int clipped_small_over_bound = 0;  // small clipped rows above their bound (the open defect)
-  int rows_over_target = 0;          // rows above kProjectedTarget
-  // Every unclipped and clipped (a >= split) row within its bound, P = 0 exact where it is 0.
+  std::string markdown;      // a Markdown section: per-form table, rows above the target
+  std::string summary_csv;   // projected_accuracy.csv: one line per form and in total
+  std::string rows_csv;      // projected_accuracy_rows.csv: one line per table row
+  double unclipped_max = 0;  // worst relative error of the unclipped form
+  double clipped_max = 0;    // worst relative error of the clipped form (or lost: inf)
+  int rows_over_target = 0;  // rows above kProjectedTarget
+  // Every row within the target, P = 0 exact where it is 0.
   bool within_bounds = false;
 };
 

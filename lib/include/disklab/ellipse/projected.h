@@ -22,11 +22,11 @@
 // Both solves are safeguarded Newton with exact derivatives (2 dC/ds = 2 (F(t_hi) - F(t_lo))
 // a b / r^2, and dF/dt = sin t (A sin t + n_z cos t)). Continuous in u, so stratified input
 // stays stratified. Unclipped sectors of ellipses the series can hold use a Chebyshev series
-// of S(t_r) / r^3 in cos 2s (the radial series' machinery), free of the O(a) terms that the
-// elementary form cancels for distant disks; clipped configurations (the disk straddles the
-// receiver's horizon) split the turn at the rim's horizon crossings and use the elementary
-// form, whose O(a) terms cancel down to P ~ a^3 for a small straddling ellipse: rounding
-// ~eps / a^2 relative (reference/projected_P.csv's straddle_far rows; an open defect, issue 19).
+// of S(t_r) / r^3 in cos 2s (the radial series' machinery). Otherwise, and wherever the disk
+// straddles the receiver's horizon (the turn split at the rim's horizon crossings), C comes from
+// the reduced boundary form (piece_part): the same Stokes integral with w - z_e in place of w,
+// whose every term is as small as P, so that no O(a) terms cancel down to P ~ a^3 for a small
+// straddling ellipse; and n_z, O(a) there, is compensated from the exact inputs (make).
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -88,6 +88,76 @@ inline double G(double r2) {
   return (std::atan2(r, h) - r * h) / (2.0 * r * r2);
 }
 
+// n . (c - o) to a few ulps of the result, which may be far smaller than |n| |c - o|: c - o is
+// formed exactly (two-sum) and the dot product compensated (Ogita, Rump and Oishi 2005, Dot2).
+inline double dot_of_difference(const Vec3& n, const Vec3& c, const Vec3& o) {
+  double sum = 0.0, err = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const double d = c[i] - o[i], bd = d - c[i];
+    const double dl = (c[i] - (d - bd)) + (-o[i] - bd);
+    const double p = n[i] * d, pl = std::fma(n[i], d, -p);
+    const double t = sum + p, bt = t - sum;
+    const double tl = (sum - (t - bt)) + (p - bt);
+    sum = t;
+    err += pl + tl + n[i] * dl;
+  }
+  return sum + err;
+}
+
+// T(t) = t - sin t = 4 S(t / 2): the meridian's and the horizon's terms of the reduced form.
+inline double T(double t) {
+  return 4.0 * S(0.5 * t);
+}
+
+// asinh(x) / x - 1 (-x^2/6 + ...), by its series below x^2 = 1/4 where the difference cancels:
+// sum_{k>=1} (-1)^k C(2k, k) 4^-k x^2k / (2k + 1), terms falling by at least x^2.
+inline double asinh_ratio_m1(double x) {
+  const double y = x * x;
+  if (y < 0.25) {
+    double c = 1.0, p = 1.0, sum = 0.0;
+    for (int k = 1; k < 64; ++k) {
+      c *= -(2.0 * k - 1.0) / (2.0 * k);
+      p *= y;
+      const double term = c * p / (2.0 * k + 1.0);
+      sum += term;
+      if (std::abs(term) <= 1e-18 * std::abs(sum)) break;
+    }
+    return sum;
+  }
+  return std::asinh(x) / x - 1.0;
+}
+
+// J = (asin p - asin(p q)) / p - (1 - q), p in [0, 1] with sp = sqrt(1 - p^2), q = cos s,
+// omq = 1 - q and ss = sin s, each given without cancellation. Below p^2 = 1/4 by asin's series,
+// sum_k C(2k, k) 4^-k p^(2k+1) / (2k + 1), whose k-th term minus the same at p q is (1 - q) (1 + q
+// + ... + q^2k) times it: J = (1 - q) sum_{k>=1} C(2k, k) 4^-k p^2k (1 + ... + q^2k) / (2k + 1);
+// above, the difference of the arcsines as one atan2 (no cancellation), divided by p.
+inline double asin_difference_m1(double p, double sp, double q, double omq, double ss) {
+  const double y = p * p;
+  if (y < 0.25) {
+    double c = 1.0, pk = 1.0, geo = 1.0, qpow = 1.0, sum = 0.0;
+    for (int k = 1; k < 64; ++k) {
+      c *= (2.0 * k - 1.0) / (2.0 * k);
+      pk *= y;
+      const double q1 = qpow * q, q2 = q1 * q;
+      geo += q1 + q2;
+      qpow = q2;
+      const double term = c * pk * geo / (2.0 * k + 1.0);
+      sum += term;
+      if (std::abs(term) <= 1e-18 * std::abs(sum)) break;
+    }
+    return omq * sum;
+  }
+  const double pq = p * q;
+  const double sq = std::sqrt(std::max(0.0, 1.0 - pq * pq));
+  // sin(asin p - asin pq) = p D, D = sq - q sp = (1 - q^2) / (sq + q sp) for q >= 0; at p = 1
+  // (sp = 0: the hemisphere's limit) and s = 0 that quotient is 0 / 0 for the limit D = 0.
+  const double dq = sq + q * sp;
+  const double D = q >= 0.0 ? (dq > 0.0 ? ss * ss / dq : 0.0) : sq - q * sp;
+  const double angle = std::atan2(p * D, sp * sq + p * pq);
+  return angle / p - omq;
+}
+
 }  // namespace projected_detail
 
 struct ProjectedMap {
@@ -144,6 +214,18 @@ struct ProjectedMap {
       return m;
     }
     m.n = m.g.to_local(receiver_normal / len);
+    // n_z = n_o . z_e places the horizon in the ellipse. Where the horizon crosses a small
+    // ellipse it is O(a), but the rotation to R_e leaves it an absolute error ~eps, i.e. ~eps / a
+    // relative in P. From c - o = l_y y_e + l_z z_e (center_local, a few ulps per component):
+    // n_z = (n_o . (c - o) - n_y l_y) / l_z with n_o . (c - o) compensated from the exact inputs.
+    // Its error, ~eps (|c - o| + |l_y|) / l_z, is no larger than the rotation's where
+    // |l_y| <= l_z (the centre within 45 degrees of z_e: every distant disk).
+    const Vec3 l = m.g.center_local();
+    const double nz_accurate =
+        (projected_detail::dot_of_difference(receiver_normal, m.g.center, m.g.origin) / len -
+         m.n.y() * l.y()) /
+        l.z();
+    if (std::abs(l.y()) <= l.z() && std::abs(nz_accurate) <= 1.0) m.n.z() = nz_accurate;
     const double a = m.g.a, b = m.g.b, nz = m.n.z();
     const double lateral = std::hypot(m.n.x() * a, m.n.y() * b);
     // |n_x a cos s + n_y b sin s| <= lateral and h_r >= cos(alpha) bound w_r . n on the rim.
@@ -224,30 +306,6 @@ struct ProjectedMap {
     return 2.0 * (F(md, md.t_hi) - F(md, md.t_lo)) * ab / md.r2;
   }
 
-  // int_0^s n . (w_r x w_r') ds', the rim's Stokes term.
-  double rim_term(double s, double cs, double ss) const {
-    const double ca = g.cos_alpha, cb = g.cos_beta, c = std::sqrt(g.a2_minus_b2);
-    double ic, is;
-    if (c == 0.0) {
-      ic = ss / ca;
-      is = (1.0 - cs) / cb;
-    } else {
-      const double x = c * ss / ca;
-      ic = std::asinh(x) / c;
-      // asin(p) - asin(p cs), p = c / cos(beta) = sqrt(m) < 1, as one atan2 whose numerator
-      // p D is formed without cancellation.
-      const double p = c / cb, q = p * cs;
-      const double sq = std::sqrt(std::max(0.0, 1.0 - q * q)),
-                   sp = std::sqrt(std::max(0.0, 1.0 - p * p));
-      const double D = cs >= 0.0 ? ss * ss / (sq + cs * sp) : sq - cs * sp;
-      const double num = p * D, den = sp * sq + p * q;
-      const double angle = std::atan2(num, den);
-      // angle / c = (angle / num) D / cos(beta).
-      is = num != 0.0 ? angle / num * D / cb : 0.0;
-    }
-    return -n.x() * g.b * ca * ca * ic - n.y() * g.a * cb * cb * is + n.z() * g.a * g.b * s;
-  }
-
   // 2 C(s), s in [0, 2 pi] (clipped: [edge[0], edge[0] + 2 pi]).
   double twice_c(double s) const {
     if (!clipped) return twice_c_unclipped(s, meridian(s, 1));
@@ -256,7 +314,7 @@ struct ProjectedMap {
   }
   double twice_c_unclipped(double s, const Meridian& md) const {
     if (series.n > 0) return series_twice_c(s, md.cs, md.ss);
-    return g.alpha * n.y() - md.t_r * md.B + rim_term(s, md.cs, md.ss);
+    return n.y() * projected_detail::T(g.alpha) - meridian_term(md) + rim_reduced(s, md.cs, md.ss);
   }
   int piece_of(double s) const {
     int i = 0;
@@ -270,20 +328,64 @@ struct ProjectedMap {
     const int kind = pieces.kind[i];
     if (kind == 0) return 0.0;
     const Meridian ma = meridian(s_a, kind);
-    double v = (ma.t_hi - ma.t_lo) * ma.B - (md.t_hi - md.t_lo) * md.B;
-    if (kind == 1 || kind == 3) v += rim_term(s, md.cs, md.ss) - rim_term(s_a, ma.cs, ma.ss);
-    if (kind == 2 || kind == 3) v += horizon_arc(kind, ma, md);
+    double v = meridian_term(ma) - meridian_term(md);
+    if (kind == 1 || kind == 3) v += rim_reduced(s, md.cs, md.ss) - rim_reduced(s_a, ma.cs, ma.ss);
+    if (kind == 2 || kind == 3) v += horizon_reduced(kind, ma, md);
     return v;
   }
 
-  // Arc length of the horizon between two meridians' horizon points in a piece of `kind` (2: the
-  // horizon is the upper end of the meridians' ranges, 3: the lower end; at a crossing both
-  // ends meet the rim).
-  double horizon_arc(int kind, const Meridian& m1, const Meridian& m2) const {
-    const double t1 = kind == 2 ? m1.t_hi : m1.t_lo, t2 = kind == 2 ? m2.t_hi : m2.t_lo;
-    const Vec3 w1(std::sin(t1) * m1.cos_phi, std::sin(t1) * m1.sin_phi, std::cos(t1));
-    const Vec3 w2(std::sin(t2) * m2.cos_phi, std::sin(t2) * m2.sin_phi, std::cos(t2));
-    return std::atan2(w1.cross(w2).norm(), w1.dot(w2));
+  // The reduced form. Every sector's boundary is closed, so the Stokes integrand n . (w x dw)
+  // may be replaced by n . ((w - z_e) x dw) (they differ by the exact form d(n . (z_e x w))).
+  // Each piece of the boundary then contributes O(a^3) for an ellipse of size a, with no O(a)
+  // terms left to cancel where a small ellipse straddles the horizon (P ~ a^3):
+  //  - a meridian from t_lo out to t_hi: (w - z_e) x dw = (1 - cos t) (z_e x e_phi) dt, so
+  //    B (T(t_hi) - T(t_lo)), T(t) = t - sin t;
+  //  - the rim: the rim's term minus n . (z_e x dw_r), i.e. minus (-n_x b sin s + n_y a cos s),
+  //    which leaves cos^2(alpha) Ic - sin s and cos^2(beta) Is - (1 - cos s), both O(a^2);
+  //  - the horizon, a great circle about n: w(psi) = cos psi p + sin psi q with p the horizon
+  //    point nearest z_e and q = n x p; then n . (w x dw) = d psi and n . (z_e x dw) =
+  //    sqrt(1 - n_z^2) d sin psi, leaving T(psi) + n_z^2 / (1 + sqrt(1 - n_z^2)) sin psi.
+  double meridian_term(const Meridian& md) const {
+    if (md.kind == 0) return 0.0;
+    return md.B * (projected_detail::T(md.t_hi) - projected_detail::T(md.t_lo));
+  }
+  // int_0^s n . ((w_r - z_e) x w_r') ds' (the rim's term of the reduced form).
+  double rim_reduced(double s, double cs, double ss) const {
+    const double ca = g.cos_alpha, cb = g.cos_beta, c = std::sqrt(g.a2_minus_b2);
+    const double omq = cs >= 0.0 ? ss * ss / (1.0 + cs) : 1.0 - cs;
+    // cos^2(alpha) Ic - sin s, Ic = asinh(c sin s / cos(alpha)) / c = int_0^s cos / h_r:
+    // sin s ((cos(alpha) - 1)(1 + E) + E), E = asinh(x) / x - 1.
+    const double e = projected_detail::asinh_ratio_m1(c * ss / ca);
+    const double xterm = ss * (e - g.a * g.a / (1.0 + ca) * (1.0 + e));
+    // cos^2(beta) Is - (1 - cos s), Is = (asin p - asin(p cos s)) / c = int_0^s sin / h_r,
+    // p = c / cos(beta) = sqrt(m), sqrt(1 - p^2) = sqrt(1 - m) from the geometry's complement
+    // (1 - p^2 would round to 0 near the hemisphere): (cos(beta) - 1)(1 - cos s) + cos(beta) J.
+    const double j =
+        projected_detail::asin_difference_m1(std::sqrt(g.m), std::sqrt(g.one_minus_m), cs, omq, ss);
+    const double yterm = cb * j - g.b * g.b / (1.0 + cb) * omq;
+    return -n.x() * g.b * xterm - n.y() * g.a * yterm + n.z() * g.a * g.b * s;
+  }
+  // psi of a meridian's point at t: atan2(w . q, w . p), both scaled by sqrt(1 - n_z^2).
+  double horizon_psi(const Meridian& md, double t) const {
+    const double st = std::sin(t), ct = std::cos(t), nz = n.z();
+    return std::atan2(st * md.B, (1.0 - nz * nz) * ct - nz * md.A * st);
+  }
+  // The horizon's term between two meridians' horizon points, in the boundary's direction (a
+  // piece of kind 2 runs from m1 to m2 along it, one of kind 3 from m2 back to m1).
+  double horizon_reduced(int kind, const Meridian& m1, const Meridian& m2) const {
+    double p1, p2;
+    if (kind == 2) {
+      p1 = horizon_psi(m1, m1.t_hi);
+      p2 = horizon_psi(m2, m2.t_hi);
+    } else {
+      p1 = horizon_psi(m2, m2.t_lo);
+      p2 = horizon_psi(m1, m1.t_lo);
+    }
+    // The arc runs forward (about n) and is shorter than pi (a convex region in a hemisphere).
+    if (p2 - p1 < -math::kPi) p2 += math::kTwoPi;
+    const double nz = n.z(), k = std::sqrt(std::max(0.0, 1.0 - nz * nz));
+    return projected_detail::T(p2) - projected_detail::T(p1) +
+           nz * nz / (1.0 + k) * (std::sin(p2) - std::sin(p1));
   }
 
   // 2 C(s) by the series: a b [n_z s + 2 n_x a Jc(s) + 2 n_y b Js(s)] with Jc = int cos G,
