@@ -353,6 +353,28 @@ TEST(Robustness, Item09_InvertWhereContains) {
   }
 }
 
+// Projected's azimuth seam above the rim: within ~1e-16 r above the rim the ellipse reaches the
+// hemisphere and sqrt(m) rounds to 1; the rim's Stokes term then divided 0 by 0 at s = 0 (the
+// seam u.x = 0 ~ 1, and every eps2 = 0 direction), so invert() answered nothing. It now returns a
+// u in the square that maps back to the direction (the contract's own resolution).
+TEST(Robustness, ProjectedSeamAboveTheRimInverts) {
+  for (const double h : {1e-16, 1e-18, 9.9999999999999995e-21, 1e-24, 1e-30}) {
+    const Vec3 o(1, 0, h);
+    const auto m = make("projected", kUnitDisk, o);
+    ASSERT_TRUE(m.valid()) << h;
+    for (const double ux : {0.0, kEps / 2, 1e-12, 0.5, 1.0 - 1e-12, 1.0 - kEps / 2, 1.0})
+      for (const double uy : {1e-9, 0.3, 0.7, 1.0}) {
+        const auto s = m.sample({ux, uy});
+        ASSERT_TRUE(s.valid) << h << " u=(" << ux << ", " << uy << ")";
+        const auto u = m.invert(s.direction);
+        ASSERT_TRUE(u.has_value()) << h << " u=(" << ux << ", " << uy << ")";
+        EXPECT_TRUE(u->x >= 0.0 && u->x <= 1.0 && u->y >= 0.0 && u->y <= 1.0) << h;
+        EXPECT_EQ(ellipse::check_inverse(m, s), ellipse::Violation::none)
+            << h << " u=(" << ux << ", " << uy << ")";
+      }
+  }
+}
+
 // 10. u outside [0, 1]^2, NaN included, is no sample for every map (tabulated read out of its
 // table; others returned NaN directions marked valid).
 TEST(Robustness, Item10_UOutsideTheDomainIsNoSample) {

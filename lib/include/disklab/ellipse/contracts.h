@@ -181,13 +181,6 @@ inline Violation check_inverse(const AnyMap& m, const EllipseSample& s) {
     if (u && std::abs(u->x - 0.5) > 0.5 - kParallelRimSlices && g.cos_alpha < 1e-2)
       return Violation::none;
   }
-  // Known limit (open): within ~1e-16 r above the disk's rim, projected's inverse computes NaN at
-  // its azimuth seam u.x = 0 ~ 1 (AnyMap::invert then answers nothing). Not asserted in that regime
-  // until its owner has looked.
-  if (m.kind() == MapKind::projected && g.cos_alpha < 1e-6) {
-    const auto u = m.invert(s.direction);
-    if (!u || std::abs(u->x - 0.5) > 0.5 - kParallelRimSlices) return Violation::none;
-  }
   // tabulated scales eps2 by its cell's bound, so the map jumps across a cell edge: there the
   // inverse may answer for the neighbour cell (as pdf(direction) may), a different u and direction.
   if (m.kind() == MapKind::tabulated &&
