@@ -76,4 +76,77 @@ RootResult safeguarded_newton(Eval&& eval, double lo, double hi, double x0, doub
                             [](double, double) { return false; });
 }
 
+// Derivatives of g at one point, for safeguarded_halley.
+struct Derivatives3 {
+  double g = 0.0, d1 = 0.0, d2 = 0.0, d3 = 0.0;
+};
+
+// The contract of safeguarded_newton for an increasing g on [lo, hi], with `eval(x)` returning
+// g and its first three derivatives. Each step is Halley's, delta = dn / (1 + dn g2 / (2 g1))
+// with dn = -g / g1 (cubic convergence; g1, g2, g3 the derivatives), or Newton's where that
+// denominator is below 1/2, or a bisection where either would leave the shrinking bracket. A
+// Halley step is final without an evaluation at its end when the residual that Halley's error
+// term predicts there, g1 |C| |delta|^3 with C = g2^2 / (4 g1^2) - g3 / (6 g1) (the error
+// e_{k+1} = C e_k^3 to leading order), is below f_tol / 8 and the step below 1e-4 of the initial
+// bracket (so that a C that happens to vanish at x cannot end the search early): such steps are
+// below ~1e-5 of the function's scale, where the next order is smaller again by about as much.
+// Halley's rule for a final step (see safeguarded_halley): `e` at x, `delta` Halley's step from
+// it, `bracket` the initial bracket's width.
+inline bool halley_step_is_final(const Derivatives3& e, double delta, double bracket,
+                                 double f_tol) {
+  const double c = e.d2 * e.d2 / (4.0 * e.d1 * e.d1) - e.d3 / (6.0 * e.d1);
+  const double ad = std::abs(delta);
+  return ad <= 1e-4 * bracket && e.d1 * std::abs(c) * ad * ad * ad <= 0.125 * f_tol;
+}
+
+template <class Eval>
+RootResult safeguarded_halley(Eval&& eval, double lo, double hi, double x0, double f_tol,
+                              double x_tol, int max_iter) {
+  RootResult out;
+  double x = (x0 >= lo && x0 <= hi) ? x0 : 0.5 * (lo + hi);
+  const double bracket = hi - lo;
+  for (int it = 1; it <= max_iter; ++it) {
+    const Derivatives3 e = eval(x);
+    out.iterations = it;
+    if (!(std::abs(e.g) > f_tol)) {  // also catches NaN g: stop rather than wander
+      out.x = x;
+      out.converged = std::abs(e.g) <= f_tol;
+      return out;
+    }
+    if (e.g < 0.0) {
+      lo = x;
+    } else {
+      hi = x;
+    }
+    double next = 0.5 * (lo + hi);
+    bool in_bracket = false;
+    if (e.d1 > 0.0) {
+      const double dn = -e.g / e.d1, denom = 1.0 + 0.5 * dn * e.d2 / e.d1;
+      const bool halley = denom >= 0.5;
+      const double delta = halley ? dn / denom : dn;
+      const double candidate = x + delta;
+      if (std::isfinite(candidate) && candidate > lo && candidate < hi) {
+        in_bracket = true;
+        next = candidate;
+        if (halley && halley_step_is_final(e, delta, bracket, f_tol)) {
+          out.x = next;
+          out.converged = out.stepped = true;
+          return out;
+        }
+      }
+    }
+    const double step = std::abs(next - x);
+    x = next;
+    if ((in_bracket && step <= x_tol) || !(lo < hi) || std::nextafter(lo, hi) >= hi) {
+      out.x = x;
+      out.converged = out.stepped = true;
+      return out;
+    }
+  }
+  out.x = x;
+  out.converged = false;
+  out.stepped = true;
+  return out;
+}
+
 }  // namespace disklab::math
