@@ -210,6 +210,48 @@ TEST(Projected, SmallStraddlingEllipsesAreSampledConsistently) {
   }
 }
 
+TEST(Projected, RootSolvesMeetTheirTolerance) {
+  // The azimuth solve (Halley with the series' derivatives where there is one, Newton on the
+  // clipped pieces) and the altitude solve (Halley, in x = t - t_lo) stop at kProjectedNewtonTol
+  // of their totals,
+  // some steps without an evaluation at their end (their predicted residual): recomputed here,
+  // the residual is that tolerance plus the rounding of one evaluation of C or G (a few ulps of
+  // the total: kEvalRounding; G's terms share a sign on the horizon's meridians).
+  constexpr double kEvalRounding = 8 * std::numeric_limits<double>::epsilon();
+  auto cfgs = configs();
+  for (const Config& c : small_straddling_configs())
+    cfgs.push_back(c);
+  for (const Config& c : cfgs) {
+    const ellipse::ProjectedMap m = make(c);
+    disklab::sequence::Pcg32 rng(23);
+    double worst_s = 0.0, worst_t = 0.0;
+    for (int i = 0; i < 20000; ++i) {
+      const double u1 = rng.next_double(), u2 = rng.next_double();
+      const double s = m.solve_s(u1, nullptr);
+      const double target = u1 * 2.0 * m.P;
+      // Clipped pieces can sum terms larger than P: their rounding, measured as the spread of C
+      // over s's neighbouring doubles (where C itself moves by ~1e-16 of its slope), is what the
+      // solve cannot go below; it is subtracted (unclipped, the series' terms are below P).
+      double lo_c = HUGE_VAL, hi_c = -HUGE_VAL, sn = s;
+      for (int k = 0; k < 4; ++k)
+        sn = std::nextafter(sn, -HUGE_VAL);
+      for (int k = 0; k < 9; ++k, sn = std::nextafter(sn, HUGE_VAL)) {
+        const double c2 = m.twice_c(sn);
+        lo_c = std::min(lo_c, c2), hi_c = std::max(hi_c, c2);
+      }
+      const double noise = m.clipped ? hi_c - lo_c : 0.0;
+      worst_s = std::max(worst_s, (std::abs(m.twice_c(s) - target) - noise) / (2.0 * m.P));
+      const auto md = m.meridian(s, m.clipped ? m.pieces.kind[m.piece_of(s)] : 1);
+      if (!(md.t_hi > md.t_lo)) continue;
+      int evals = 0;
+      const double x = m.solve_x(md, u2, &evals);
+      worst_t = std::max(worst_t, std::abs(m.G(md, x) - u2 * m.G_range(md)) / m.G_range(md));
+    }
+    EXPECT_LE(worst_s, ellipse::kProjectedNewtonTol + kEvalRounding) << c.name;
+    EXPECT_LE(worst_t, ellipse::kProjectedNewtonTol + kEvalRounding) << c.name;
+  }
+}
+
 TEST(Projected, ZeroVarianceForALambertianReceiver) {
   // f / pdf = L (w . n_o) / pdf = L P for every valid sample, which must also meet the disk
   // above the horizon: the relative standard deviation over 1e4 samples is rounding only.

@@ -170,6 +170,8 @@ struct ProjectedMap {
     double t_r = 0.0;               // rim angle from z_e
     double t_lo = 0.0, t_hi = 0.0;  // the part above the horizon (t_lo == t_hi: none)
     int kind = 0;  // 0 empty, 1 rim over apex, 2 horizon over apex, 3 rim over horizon
+    // G(x) = F(t_lo + x) - F(t_lo) = ga S(x) + gb sin^2(x) / 2 + gc (x - S(x)) (see G()).
+    double ga = 0.0, gb = 0.0, gc = 0.0;
   };
 
   // A great circle meets the rim at most 4 times: at most 5 pieces of the turn.
@@ -186,6 +188,10 @@ struct ProjectedMap {
   // 12 terms hold every ellipse up to a ~ 0.3 (sizes the sampler under any_map.h's 512 bytes);
   // beyond, the elementary form's rounding (~eps / a relative) is no larger than the series'.
   static constexpr int kSeriesCapacity = 12;
+  // 1 / (2j + 1) for the series' odd harmonics.
+  static constexpr double kInverseOdd[kSeriesCapacity + 1] = {
+      1.0,      1.0 / 3,  1.0 / 5,  1.0 / 7,  1.0 / 9,  1.0 / 11, 1.0 / 13,
+      1.0 / 15, 1.0 / 17, 1.0 / 19, 1.0 / 21, 1.0 / 23, 1.0 / 25};
   struct Series {
     int n = 0;
     double g0 = 0.0;
@@ -266,7 +272,8 @@ struct ProjectedMap {
     md.sin_phi = py / md.r;
     md.A = n.x() * md.cos_phi + n.y() * md.sin_phi;
     md.B = n.y() * md.cos_phi - n.x() * md.sin_phi;
-    md.t_r = std::atan2(md.r, g.hr_parametric(cs, ss));
+    const double hr = g.hr_parametric(cs, ss);
+    md.t_r = std::atan2(md.r, hr);
     const double nz = n.z();
     if (kind < 0) {
       if (nz > 0.0)
@@ -275,6 +282,7 @@ struct ProjectedMap {
         kind = md.A > 0.0 && std::atan2(-nz, md.A) < md.t_r ? 3 : 0;
     }
     md.kind = kind;
+    double sin_lo = 0.0, cos_lo = 1.0;
     switch (kind) {
       case 1:  // the whole meridian
         md.t_hi = md.t_r;
@@ -282,20 +290,42 @@ struct ProjectedMap {
       case 2:  // n_z > 0: above the horizon for t < t_h = atan2(n_z, -A) in (0, pi)
         md.t_hi = std::min(md.t_r, std::atan2(nz, -md.A));
         break;
-      case 3:  // n_z <= 0: above it for t > t_h = atan2(-n_z, A) in [0, pi/2) (A >= 0)
-        md.t_lo = std::min(md.t_r, std::atan2(-nz, std::max(0.0, md.A)));
+      case 3: {  // n_z <= 0: above it for t > t_h = atan2(-n_z, A) in [0, pi/2) (A >= 0)
+        const double ap = std::max(0.0, md.A), th = std::atan2(-nz, ap);
         md.t_hi = md.t_r;
+        // sin and cos of t_lo from its own arguments (t_r = atan2(r, h_r), r^2 + h_r^2 = 1).
+        if (th < md.t_r) {
+          const double rr = std::hypot(nz, ap);
+          md.t_lo = th, sin_lo = -nz / rr, cos_lo = ap / rr;
+        } else {
+          md.t_lo = md.t_r, sin_lo = md.r, cos_lo = hr;
+        }
         break;
+      }
       default:
         break;
     }
+    // About t_lo the cosine is R' sin x + H cos x, x = t - t_lo (H its value at t_lo, 0 on the
+    // horizon), and sin t = sin t_lo cos x + cos t_lo sin x: their product integrates to G.
+    const double H = md.A * sin_lo + nz * cos_lo, Rp = md.A * cos_lo - nz * sin_lo;
+    md.ga = Rp * cos_lo;
+    md.gb = Rp * sin_lo + H * cos_lo;
+    md.gc = H * sin_lo;
     return md;
   }
 
-  double F(const Meridian& md, double t) const {
-    const double st = std::sin(t);
-    return md.A * projected_detail::S(t) + 0.5 * n.z() * st * st;
+  // int_{t_lo}^{t_lo + x} (A sin t + n_z cos t) sin t dt: the projected solid angle along the
+  // meridian from its lower end (per unit azimuth). On the horizon's meridians (kind 3), where
+  // F(t) itself is much larger than its rise from t_lo, every term is non-negative: ga = A cos^2
+  // + (-n_z) sin cos, gb = R' sin t_lo, gc = 0; from the apex (t_lo = 0) it is A S(x) + n_z
+  // sin^2(x) / 2, whose terms differ in sign only below the horizon angle (a bounded loss).
+  // With sin x and cos x given; S(x) = (x - sin x cos x) / 2 above the series' range.
+  double G(const Meridian& md, double x, double sx, double cx) const {
+    const double sxx = x < 0.5 ? projected_detail::S(x) : 0.5 * (x - sx * cx);
+    return md.ga * sxx + 0.5 * md.gb * sx * sx + md.gc * (x - sxx);
   }
+  double G(const Meridian& md, double x) const { return G(md, x, std::sin(x), std::cos(x)); }
+  double G_range(const Meridian& md) const { return G(md, md.t_hi - md.t_lo); }
   // 2 dC/ds.
   double density_s(const Meridian& md) const {
     if (md.kind == 0) return 0.0;
@@ -303,7 +333,7 @@ struct ProjectedMap {
     if (!clipped)
       return ab * (n.z() +
                    2.0 * (n.x() * g.a * md.cs + n.y() * g.b * md.ss) * projected_detail::G(md.r2));
-    return 2.0 * (F(md, md.t_hi) - F(md, md.t_lo)) * ab / md.r2;
+    return 2.0 * G_range(md) * ab / md.r2;
   }
 
   // 2 C(s), s in [0, 2 pi] (clipped: [edge[0], edge[0] + 2 pi]).
@@ -391,37 +421,43 @@ struct ProjectedMap {
   // 2 C(s) by the series: a b [n_z s + 2 n_x a Jc(s) + 2 n_y b Js(s)] with Jc = int cos G,
   // Js = int sin G, G = sum_m g_m cos 2ms.
   double series_twice_c(double s, double cs, double ss) const {
-    return series_twice_c_and_density(s, cs, ss).first;
+    return series_twice_c_derivatives(s, cs, ss).g;
   }
-  // The same with its derivative 2 dC/ds = a b [n_z + 2 n_x a Jc' + 2 n_y b Js'] from the same
-  // harmonics (Jc' = sum c_j cos (2j+1)s, Js' = sum d_j sin (2j+1)s).
-  std::pair<double, double> series_twice_c_and_density(double s, double cs, double ss) const {
+  // The same with its first three derivatives (2 dC/ds = a b [n_z + 2 n_x a Jc' + 2 n_y b Js'],
+  // Jc' = sum c_j cos (2j+1)s, Js' = sum d_j sin (2j+1)s, differentiated term by term).
+  math::Derivatives3 series_twice_c_derivatives(double s, double cs, double ss) const {
     const int nt = series.n;
-    auto gamma = [&](int m) {
-      if (m == 0) return series.g0;
-      return m <= nt ? series.g[m - 1] : 0.0;
-    };
-    // cos, sin of (2j + 1) s by the rotation (cos 2s, sin 2s).
-    const double c2 = cs * cs - ss * ss, s2 = 2.0 * cs * ss;
-    double ck = cs, sk = ss, jc = 0.0, js = 0.0, djc = 0.0, djs = 0.0;
+    // cos, sin of k s, k = 2j + 1, by the rotation (cos 2s, sin 2s), and 1 - cos ks by the same
+    // rotation, 1 - cos(k + 2)s = (1 - cos ks) cos 2s + 2 sin^2 s + sin ks sin 2s, whose terms
+    // are all positive for small s (no 1 - cos cancellation, no division).
+    const double c2 = cs * cs - ss * ss, s2 = 2.0 * cs * ss, two_ss2 = 2.0 * ss * ss;
+    double ck = cs, sk = ss, omc = cs >= 0.0 ? ss * ss / (1.0 + cs) : 1.0 - cs;
+    double jc = 0.0, js = 0.0;
+    double d1c = 0.0, d1s = 0.0, d2c = 0.0, d2s = 0.0, d3c = 0.0, d3s = 0.0;
+    double gj = series.g0;
     for (int j = 0; j <= nt; ++j) {
-      const double k = 2.0 * j + 1.0;
-      const double gj = gamma(j), gj1 = gamma(j + 1);
-      const double cj = 0.5 * (gj + gj1) + (j == 0 ? 0.5 * gj : 0.0);
-      const double dj = 0.5 * (gj - gj1) + (j == 0 ? 0.5 * gj : 0.0);
-      // 1 - cos(k s) = (sin^2 ks) / (1 + cos ks) where that does not cancel.
-      const double omc = ck >= 0.0 ? sk * sk / (1.0 + ck) : 1.0 - ck;
-      jc += cj * sk / k;
-      js += dj * omc / k;
-      djc += cj * ck;
-      djs += dj * sk;
+      const double k = 2.0 * j + 1.0, inv_k = kInverseOdd[j];
+      const double gj1 = j < nt ? series.g[j] : 0.0;
+      const double extra = j == 0 ? 0.5 * gj : 0.0;
+      const double cj = 0.5 * (gj + gj1) + extra, dj = 0.5 * (gj - gj1) + extra;
+      gj = gj1;
+      jc += cj * sk * inv_k;
+      js += dj * omc * inv_k;
+      const double ccos = cj * ck, csin = cj * sk, dcos = dj * ck, dsin = dj * sk;
+      d1c += ccos;
+      d1s += dsin;
+      d2c -= k * csin;
+      d2s += k * dcos;
+      d3c -= k * k * ccos;
+      d3s -= k * k * dsin;
+      omc = omc * c2 + two_ss2 + sk * s2;
       const double cn = ck * c2 - sk * s2;
       sk = sk * c2 + ck * s2;
       ck = cn;
     }
-    const double ab = g.a * g.b;
-    return {ab * (n.z() * s + 2.0 * n.x() * g.a * jc + 2.0 * n.y() * g.b * js),
-            ab * (n.z() + 2.0 * n.x() * g.a * djc + 2.0 * n.y() * g.b * djs)};
+    const double ab = g.a * g.b, x = 2.0 * n.x() * g.a, y = 2.0 * n.y() * g.b;
+    return {ab * (n.z() * s + x * jc + y * js), ab * (n.z() + x * d1c + y * d1s),
+            ab * (x * d2c + y * d2s), ab * (x * d3c + y * d3s)};
   }
 
   // u.x -> s.
@@ -440,42 +476,72 @@ struct ProjectedMap {
     }
     const double span = (clipped ? pieces.cum[piece + 1] - base : total);
     const double frac = span > 0.0 ? std::clamp((target - base) / span, 0.0, 1.0) : 0.0;
-    auto eval = [&](double s) {
-      if (!clipped && series.n > 0) {
-        const auto [v, d] = series_twice_c_and_density(s, std::cos(s), std::sin(s));
-        return std::pair<double, double>(v - target, d);
-      }
-      const Meridian md = meridian(s, clipped ? pieces.kind[piece] : 1);
-      const double v = clipped ? base + piece_part(piece, lo, s, md) : twice_c_unclipped(s, md);
-      return std::pair<double, double>(v - target, density_s(md));
-    };
-    // A Newton step below 1e-9 of the bracket is taken without evaluating at its end: the
-    // residual there is (C''/2) delta^2, below 1e-18 of the total for the smooth marginal.
-    const double final_step = 1e-9 * (hi - lo);
-    const math::RootResult root = math::safeguarded_newton(
-        eval, lo, hi, lo + frac * (hi - lo), kProjectedNewtonTol * total, 1e-16,
-        kRadialMaxEvaluations, [&](double, double delta) { return std::abs(delta) <= final_step; });
+    const double x0 = lo + frac * (hi - lo), f_tol = kProjectedNewtonTol * total;
+    math::RootResult root;
+    if (!clipped && series.n > 0) {
+      // The series gives C's derivatives for Halley's step.
+      root = math::safeguarded_halley(
+          [&](double s) {
+            math::Derivatives3 d = series_twice_c_derivatives(s, std::cos(s), std::sin(s));
+            d.g -= target;
+            return d;
+          },
+          lo, hi, x0, f_tol, 1e-16, kRadialMaxEvaluations);
+    } else {
+      auto eval = [&](double s) {
+        const Meridian md = meridian(s, clipped ? pieces.kind[piece] : 1);
+        const double v = clipped ? base + piece_part(piece, lo, s, md) : twice_c_unclipped(s, md);
+        return std::pair<double, double>(v - target, density_s(md));
+      };
+      // A Newton step below 1e-9 of the bracket is taken without evaluating at its end: the
+      // residual there is (C''/2) delta^2, below 1e-18 of the total for the smooth marginal.
+      const double final_step = 1e-9 * (hi - lo);
+      root = math::safeguarded_newton(
+          eval, lo, hi, x0, f_tol, 1e-16, kRadialMaxEvaluations,
+          [&](double, double delta) { return std::abs(delta) <= final_step; });
+    }
     if (iterations) *iterations = root.iterations;
     return root.x;
   }
 
-  // u.y -> t on the meridian.
-  double solve_t(const Meridian& md, double u2, int* iterations) const {
-    const double f_lo = F(md, md.t_lo), f_hi = F(md, md.t_hi);
-    const double target = f_lo + std::clamp(u2, 0.0, 1.0) * (f_hi - f_lo);
-    const double s_lo = std::sin(md.t_lo), s_hi = std::sin(md.t_hi);
-    const double s2 = s_lo * s_lo + std::clamp(u2, 0.0, 1.0) * (s_hi * s_hi - s_lo * s_lo);
-    const double start = std::clamp(std::asin(std::sqrt(std::max(0.0, s2))), md.t_lo, md.t_hi);
-    auto eval = [&](double t) {
-      const double st = std::sin(t), ct = std::cos(t);
-      return std::pair<double, double>(F(md, t) - target, st * (md.A * st + n.z() * ct));
+  // u.y -> x = t - t_lo on the meridian: G(x) = u.y G(t_hi - t_lo).
+  double solve_x(const Meridian& md, double u2, int* iterations) const {
+    const double range = md.t_hi - md.t_lo, sr = std::sin(range), cr = std::cos(range);
+    const double total = G(md, range, sr, cr);
+    const double f = std::clamp(u2, 0.0, 1.0), target = f * total;
+    // G' = ga sin^2 x + gb sin x cos x + gc cos^2 x, G'' = (ga - gc) sin 2x + gb cos 2x,
+    // G''' = 2 (ga - gc) cos 2x - 2 gb sin 2x.
+    auto derivatives = [&](double x, double sx, double cx) {
+      const double s2x = 2.0 * sx * cx, c2x = (cx - sx) * (cx + sx), d = md.ga - md.gc;
+      return math::Derivatives3{G(md, x, sx, cx) - target,
+                                md.ga * sx * sx + md.gb * sx * cx + md.gc * cx * cx,
+                                d * s2x + md.gb * c2x, 2.0 * (d * c2x - md.gb * s2x)};
     };
-    // As for the azimuth: F'' is bounded by ~|A| + n_z, so a step below 1e-9 of the range
-    // leaves a residual far below the tolerance.
-    const double final_step = 1e-9 * (md.t_hi - md.t_lo);
-    const math::RootResult root = math::safeguarded_newton(
-        eval, md.t_lo, md.t_hi, start, kProjectedNewtonTol * std::abs(f_hi - f_lo), 1e-17,
-        kRadialMaxEvaluations, [&](double, double delta) { return std::abs(delta) <= final_step; });
+    // The start, sin^2 x = u.y sin^2(range): exact where G is gb sin^2(x) / 2 alone (the cosine
+    // n_z cos t about the apex), and there sin x and cos x are known without a call: one Halley
+    // step from it costs no trigonometry, and is final by safeguarded_halley's own rule.
+    const double f_tol = kProjectedNewtonTol * std::abs(total);
+    double x0 = f * range;
+    if (range <= math::kHalfPi) {
+      const double sx = std::sqrt(f) * sr, cx = std::sqrt(std::max(0.0, 1.0 - sx * sx));
+      x0 = std::min(std::asin(sx), range);  // asin(sin(range)) may round above range
+      const math::Derivatives3 e = derivatives(x0, sx, cx);
+      if (iterations) *iterations += 1;
+      if (!(std::abs(e.g) > f_tol)) return x0;
+      if (e.d1 > 0.0) {
+        const double dn = -e.g / e.d1, denom = 1.0 + 0.5 * dn * e.d2 / e.d1;
+        if (denom >= 0.5) {
+          const double delta = dn / denom, x1 = x0 + delta;
+          if (x1 > 0.0 && x1 < range) {
+            if (math::halley_step_is_final(e, delta, range, f_tol)) return x1;
+            x0 = x1;
+          }
+        }
+      }
+    }
+    const math::RootResult root = math::safeguarded_halley(
+        [&](double x) { return derivatives(x, std::sin(x), std::cos(x)); }, 0.0, range,
+        std::clamp(x0, 0.0, range), f_tol, 1e-17, kRadialMaxEvaluations);
     if (iterations) *iterations += root.iterations;
     return root.x;
   }
@@ -486,7 +552,7 @@ struct ProjectedMap {
     const double s = solve_s(u.x, iterations);
     const Meridian md = meridian(s, clipped ? pieces.kind[piece_of(s)] : 1);
     if (md.kind == 0 || !(md.t_hi > md.t_lo)) return {};
-    const double t = solve_t(md, u.y, iterations);
+    const double t = md.t_lo + solve_x(md, u.y, iterations);
     const double st = std::sin(t);
     const Vec3 local(st * md.cos_phi, st * md.sin_phi, std::cos(t));
     EllipseSample out;
@@ -517,11 +583,10 @@ struct ProjectedMap {
     const Meridian md = meridian(s, clipped ? pieces.kind[piece_of(s)] : 1);
     const double u1 = std::clamp(twice_c(s) / (2.0 * P), 0.0, 1.0);
     const double t = std::atan2(std::hypot(l.x(), l.y()), l.z());
-    const double f_lo = F(md, md.t_lo), f_hi = F(md, md.t_hi);
-    const double u2 =
-        f_hi > f_lo
-            ? std::clamp((F(md, std::clamp(t, md.t_lo, md.t_hi)) - f_lo) / (f_hi - f_lo), 0.0, 1.0)
-            : 0.0;
+    const double range = md.t_hi - md.t_lo, total = G_range(md);
+    const double u2 = total > 0.0
+                          ? std::clamp(G(md, std::clamp(t - md.t_lo, 0.0, range)) / total, 0.0, 1.0)
+                          : 0.0;
     return {u1, u2};
   }
   std::optional<Point2> invert(const Vec3& direction) const {
