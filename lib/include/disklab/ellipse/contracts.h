@@ -47,15 +47,9 @@ inline constexpr double kProjectedPdfRel = 8 * std::numeric_limits<double>::epsi
 inline constexpr double kCellEdgeSlack = 1e-12;
 // The angle between a sample's direction and the one sample(invert(direction)) gives. The
 // inverse and the root solves are exact to ~1e-15 in u; the forward maps' sensitivity to u is
-// bounded by a few radians per unit of u except at the parallel map's rim (eps1^(1/3) there) and
-// the centre of the radial maps (eps2^(1/2)), where a 1e-15 change in u moves the direction by up
-// to ~1e-8: 1e-7 leaves a margin of 10.
+// bounded by a few radians per unit of u except at the centre of the radial maps (eps2^(1/2)),
+// where a 1e-15 change in u moves the direction by up to ~1e-8: 1e-7 leaves a margin of 10.
 inline constexpr double kInverseAngleTol = 1e-7;
-// The parallel map's slice angle near the rim is fixed by eps1 only to the cube root of its
-// Newton tolerance (Omega_p ~ (pi/2 - varphi)^3 there, kParallelNewtonTol = 1e-15): 1e-5 of the
-// ellipse's size, so its round trip is held to 1e-4 of the long semi-arc alpha.
-inline constexpr double kParallelInverseRel = 1e-4;
-inline constexpr double kParallelRimSlices = 1e-12;
 
 enum class Violation { none, non_finite, not_unit, miss, pdf_mismatch, inverse_failure, bad_pdf };
 
@@ -169,17 +163,6 @@ inline Violation check_inverse(const AnyMap& m, const EllipseSample& s) {
     if (!(hit_error < 1e-6)) return Violation::none;
     // The hit's error over |x - o|, seen from o: the direction's error over cos(theta_l).
     resolution += kResolutionFactor * area_direction_error(g, s) / cos_light;
-  }
-  if (m.kind() == MapKind::parallel) {
-    resolution += kParallelInverseRel * g.alpha;
-    // Known limit (open): within ~1e-4 r of the plane of the disk's rim the rim slices (eps1
-    // within kParallelRimSlices of 0 or 1) round-trip only to ~1e-3 rad. Cause: Newton stops at
-    // an absolute 1e-15 Omega of Omega_p, and there the slices holding the last 1e-15 of the mass
-    // span h_p from ~a to 0 (1 - m ~ h/r is tiny, so h_p stays ~a until cos varphi ~ sqrt(1 - m));
-    // solving the complementary mass from the rim end to a relative tolerance would fix it.
-    const auto u = m.invert(s.direction);
-    if (u && std::abs(u->x - 0.5) > 0.5 - kParallelRimSlices && g.cos_alpha < 1e-2)
-      return Violation::none;
   }
   // tabulated scales eps2 by its cell's bound, so the map jumps across a cell edge: there the
   // inverse may answer for the neighbour cell (as pdf(direction) may), a different u and direction.
