@@ -152,6 +152,9 @@ inline double inverse_resolution(const MapGeometry& g) {
 // The inverse contract for a valid sample (none for maps without an inverse).
 inline Violation check_inverse(const AnyMap& m, const EllipseSample& s) {
   if (!s.valid || !m.has_inverse()) return Violation::none;
+  // invert() answers only where contains() is true; a sample outside it is on the rim to the
+  // direction's resolution (check_sample's rule), where there is no inverse to ask for.
+  if (!m.contains(s.direction)) return Violation::none;
   const MapGeometry& g = m.geometry();
   double resolution = inverse_resolution(g);
   if (m.kind() == MapKind::area) {
