@@ -9,6 +9,7 @@
 // iterate never leaves [lo, hi], the result is always finite, and the number of evaluations is
 // reported so callers and tests can record it.
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace disklab::math {
@@ -19,6 +20,26 @@ struct RootResult {
   bool converged = false;
   bool stepped = false;  // x is one step past the last evaluation (not evaluated itself)
 };
+
+namespace detail {
+// `out` (its evaluations counted) ending one step past the last evaluation, at x.
+inline RootResult stepped_result(RootResult out, double x, bool converged) {
+  out.x = x;
+  out.converged = converged;
+  out.stepped = true;
+  return out;
+}
+// Whether the search ends after stepping to x: a step below x_tol (where it counts), or a
+// bracket down to adjacent doubles. Adjacent doubles are at most eps |lo| + the smallest
+// subnormal apart: that cheap necessary test runs before nextafter.
+inline bool search_ends(double step, bool step_counts, double x_tol, double lo, double hi) {
+  if ((step_counts && step <= x_tol) || !(lo < hi)) return true;
+  constexpr double kEps = std::numeric_limits<double>::epsilon();
+  constexpr double kTiny = std::numeric_limits<double>::denorm_min();
+  if (!(hi - lo <= kEps * std::abs(lo) + kTiny)) return false;
+  return std::nextafter(lo, hi) >= hi;
+}
+}  // namespace detail
 
 // Solves g(x) = 0 for g increasing on [lo, hi] with g(lo) <= 0 <= g(hi) (not checked: with a
 // wrong sign the iterate walks to the nearest end, which is the natural clamp).
@@ -49,24 +70,13 @@ RootResult safeguarded_newton(Eval&& eval, double lo, double hi, double x0, doub
     }
     double next = x - g / dg;
     const bool newton_ok = dg > 0.0 && std::isfinite(next) && next > lo && next < hi;
-    if (newton_ok && final_step(x, next - x)) {
-      out.x = next;
-      out.converged = out.stepped = true;
-      return out;
-    }
+    if (newton_ok && final_step(x, next - x)) return detail::stepped_result(out, next, true);
     if (!newton_ok) next = 0.5 * (lo + hi);
     const double step = std::abs(next - x);
     x = next;
-    if (step <= x_tol || !(lo < hi) || std::nextafter(lo, hi) >= hi) {
-      out.x = x;
-      out.converged = out.stepped = true;
-      return out;
-    }
+    if (detail::search_ends(step, true, x_tol, lo, hi)) return detail::stepped_result(out, x, true);
   }
-  out.x = x;
-  out.converged = false;
-  out.stepped = true;
-  return out;
+  return detail::stepped_result(out, x, false);
 }
 
 template <class Eval>
@@ -128,25 +138,16 @@ RootResult safeguarded_halley(Eval&& eval, double lo, double hi, double x0, doub
       if (std::isfinite(candidate) && candidate > lo && candidate < hi) {
         in_bracket = true;
         next = candidate;
-        if (halley && halley_step_is_final(e, delta, bracket, f_tol)) {
-          out.x = next;
-          out.converged = out.stepped = true;
-          return out;
-        }
+        if (halley && halley_step_is_final(e, delta, bracket, f_tol))
+          return detail::stepped_result(out, next, true);
       }
     }
     const double step = std::abs(next - x);
     x = next;
-    if ((in_bracket && step <= x_tol) || !(lo < hi) || std::nextafter(lo, hi) >= hi) {
-      out.x = x;
-      out.converged = out.stepped = true;
-      return out;
-    }
+    if (detail::search_ends(step, in_bracket, x_tol, lo, hi))
+      return detail::stepped_result(out, x, true);
   }
-  out.x = x;
-  out.converged = false;
-  out.stepped = true;
-  return out;
+  return detail::stepped_result(out, x, false);
 }
 
 }  // namespace disklab::math
