@@ -159,26 +159,16 @@ struct RadialSeries {
     return a0 * s + sine_sum(b, n, cos2, sin2);
   }
 
-  // sum_{k=1}^{count} c[k - 1] sin(k theta), theta = 2x, from cos theta and sin theta: two
-  // Clenshaw recurrences in the step 2 theta, one over odd k (sin(theta + 2 j theta)) and one over
-  // even k (sin(2 theta + 2 j theta)), whose chains of dependent additions run side by side. With
-  // alpha = 2 cos 2 theta, b_j = d_j + alpha b_{j+1} - b_{j+2}, and sum_j d_j sin(t0 + 2 j theta)
-  // = b_0 sin t0 - b_1 sin(t0 - 2 theta): sin theta (b_0 + b_1) for the odd terms, sin 2 theta b_0
-  // for the even ones. Each chain's rounding grows at most like j |d_j| where |alpha| -> 2.
+  // sum_{k=1}^{count} c[k - 1] sin(2 k x) from cos 2x and sin 2x (Clenshaw).
   static double sine_sum(const double* c, int count, double cos2, double sin2) {
-    const double alpha = 2.0 * (cos2 - sin2) * (cos2 + sin2);
-    double o1 = 0.0, o2 = 0.0, e1 = 0.0, e2 = 0.0;  // b_{j+1}, b_{j+2} of the two chains
-    int j = count / 2;                               // even terms: k = 2, 4, .., 2 (count / 2)
-    if (count & 1) o1 = c[count - 1];                // the odd chain's top term, k = count
-    for (--j; j >= 0; --j) {
-      const double o = c[2 * j] + alpha * o1 - o2;      // k = 2j + 1
-      const double e = c[2 * j + 1] + alpha * e1 - e2;  // k = 2j + 2
-      o2 = o1;
-      o1 = o;
-      e2 = e1;
-      e1 = e;
+    const double two_c = 2.0 * cos2;
+    double y1 = 0.0, y2 = 0.0;
+    for (int k = count; k >= 1; --k) {
+      const double y = c[k - 1] + two_c * y1 - y2;
+      y2 = y1;
+      y1 = y;
     }
-    return sin2 * ((o1 + o2) + 2.0 * cos2 * e1);
+    return y1 * sin2;
   }
 
   // ---- the inverse map's seed (radial-fast) ----
