@@ -80,6 +80,8 @@ struct ParallelMap {
   }
   bool valid() const { return !g.empty; }
 
+  // k q = 2 c_t b_t / (1 + b_t^2) = 2 a b sqrt(1 - b^2): the scale of the slices' density.
+  double kq() const { return 2.0 * g.a * g.b * std::sqrt(g.one_minus_b2); }
   // The mass of the slices beyond varphi_p, Omega_p^+(pi/2) - Omega_p^+(varphi_p), from
   // cv = cos varphi_p and sv = sin varphi_p, to a few ulps relative. With s = cos of the
   // integration angle, the integrand of eq. (6) in varphi_p becomes
@@ -89,11 +91,11 @@ struct ParallelMap {
   // Pi - F written as that integral): all terms positive, no cancellation.
   double rim_mass(double cv, double sv) const {
     const SphericalEllipse& se = g;
-    const double q = se.one_minus_b2, kq = 2.0 * se.a * se.b * std::sqrt(q);
+    const double q = se.one_minus_b2;
     const double delta2 = cv * cv + se.one_minus_m * sv * sv;
     const double y = delta2 / se.one_minus_m;
     if (std::isfinite(y)) {
-      return kq / std::sqrt(se.one_minus_m) * (cv * cv * cv / 3.0) *
+      return kq() / std::sqrt(se.one_minus_m) * (cv * cv * cv / 3.0) *
              math::carlson_rj(sv * sv, y, 1.0, sv * sv + q * cv * cv);
     }
     // 1 - m below the normal range: the limit m = 1, where Delta = cos and the integral is
@@ -105,9 +107,9 @@ struct ParallelMap {
   // q = 1 / (1 + b_t^2) so that no square of b_t can overflow.
   double slice_density(double cv, double sv) const {
     const SphericalEllipse& se = g;
-    const double q = se.one_minus_b2, kq = 2.0 * se.a * se.b * std::sqrt(q);
+    const double q = se.one_minus_b2;
     const double delta = std::sqrt(cv * cv + se.one_minus_m * sv * sv);
-    return kq * cv * cv / (delta * (q + se.b * se.b * sv * sv));
+    return kq() * cv * cv / (delta * (q + se.b * se.b * sv * sv));
   }
   // cos and sin of the slice varphi_p whose mass beyond it is r * half (r in (0, 1]), by
   // safeguarded Newton on rim_mass to a relative tolerance. The variable is w = pi/2 - varphi_p
@@ -123,9 +125,9 @@ struct ParallelMap {
     const double c4 = std::sqrt(0.5);  // cos(pi/4) = sin(pi/4), to the rounding of both
     math::RootResult res;
     if (rim_mass(c4, c4) >= target) {
-      const double kq = 2.0 * g.a * g.b * std::sqrt(g.one_minus_b2);
-      const double w_cubic = std::cbrt(3.0 * target * std::sqrt(g.one_minus_m) / kq);
-      const double w_square = std::sqrt(2.0 * target / kq);
+      const double k = kq();
+      const double w_cubic = std::cbrt(3.0 * target * std::sqrt(g.one_minus_m) / k);
+      const double w_square = std::sqrt(2.0 * target / k);
       const double w0 = std::min(kQuarter, std::max(w_cubic, w_square));
       auto eval = [this, target](double w) {
         const double cv = std::sin(w), sv = std::cos(w);
