@@ -1,0 +1,79 @@
+// The rotation of an angle's cosine and sine by a small step (math/rotation.h): each tier of the
+// step's Taylor polynomials is accurate to rounding against long double, and a moved angle's
+// cosine and sine agree with the library's at the new angle.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "disklab/math/rotation.h"
+#include "disklab/sequence/random.h"
+
+namespace {
+using disklab::math::AngleCosSin;
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+// sin(d) and 1 - cos(d) = 2 sin^2(d / 2) in long double (64-bit significand on x86-64: its own
+// error, ~1e-19 relative, is far below the double tolerances).
+void reference(double d, long double& sin_d, long double& vers_d) {
+  sin_d = std::sin(static_cast<long double>(d));
+  const long double h = std::sin(static_cast<long double>(d) / 2);
+  vers_d = 2 * h * h;
+}
+
+// Every tier's remainder is below 3e-18 relative and its Horner sum rounds to about an ulp: two
+// ulps of each value.
+void expect_small_step_accurate(double d) {
+  double sin_d, vers_d;
+  disklab::math::sin_and_versine_small(d, sin_d, vers_d);
+  long double rs, rv;
+  reference(d, rs, rv);
+  EXPECT_LE(std::abs(sin_d - rs), 2 * kEps * std::abs(rs)) << "d = " << d;
+  EXPECT_LE(std::abs(vers_d - rv), 2 * kEps * rv) << "d = " << d;
+}
+
+TEST(Rotation, EveryTierAccurateUpToItsBoundAndJustBeyond) {
+  // The tiers' edges (1e-4, 1/32, kSmallRotation) from both sides, in both signs.
+  for (const double edge : {1e-4, 1.0 / 32, disklab::math::kSmallRotation}) {
+    for (const double d : {std::nextafter(edge, 0.0), edge, std::nextafter(edge, 1.0)}) {
+      if (d > disklab::math::kSmallRotation) continue;
+      expect_small_step_accurate(d);
+      expect_small_step_accurate(-d);
+    }
+  }
+  // Log-uniform steps from 1e-150 (below, d^2 and so 1 - cos d underflow) to the largest.
+  disklab::sequence::Pcg32 rng(11);
+  for (int i = 0; i < 20000; ++i) {
+    const double d = disklab::math::kSmallRotation * std::pow(10.0, -150.0 * rng.next_double());
+    expect_small_step_accurate(rng.next_double() < 0.5 ? d : -d);
+  }
+  // And uniform ones over the whole range (where the larger tiers' remainders peak).
+  for (int i = 0; i <= 4000; ++i)
+    expect_small_step_accurate(disklab::math::kSmallRotation * i / 4000.0);
+}
+
+RC_GTEST_PROP(Rotation, MovedAngleMatchesTheLibrary, ()) {
+  const double a = (*rc::gen::inRange(-1000000, 1000000) / 1000000.0) * 3.2;
+  // Steps across every tier and past kSmallRotation (where the library is called).
+  const double d = std::pow(10.0, -*rc::gen::inRange(0, 14000) / 1000.0) * 0.3 *
+                   (*rc::gen::arbitrary<bool>() ? 1.0 : -1.0);
+  const AngleCosSin at{a, std::cos(a), std::sin(a)};
+  const double x = a + d;
+  const AngleCosSin moved = disklab::math::moved_to(at, x);
+  RC_ASSERT(moved.s == x);
+  // Each of at's values is within an ulp of the truth, the rotation adds about an ulp of |d|
+  // and the final sum half an ulp, and std::sin(x) is within an ulp: 4 eps of their scale.
+  const double dd = std::abs(x - a);
+  RC_ASSERT(std::abs(moved.ss - std::sin(x)) <= 4 * kEps * (std::abs(at.ss) + dd));
+  RC_ASSERT(std::abs(moved.cs - std::cos(x)) <= 4 * kEps * (std::abs(at.cs) + dd));
+}
+
+TEST(Rotation, NoStepReturnsTheSameValues) {
+  const AngleCosSin at{0.7, std::cos(0.7), std::sin(0.7)};
+  const AngleCosSin moved = disklab::math::moved_to(at, 0.7);
+  EXPECT_EQ(moved.cs, at.cs);
+  EXPECT_EQ(moved.ss, at.ss);
+}
+
+}  // namespace
