@@ -104,9 +104,11 @@ struct Derivatives3 {
 // it, `bracket` the initial bracket's width.
 inline bool halley_step_is_final(const Derivatives3& e, double delta, double bracket,
                                  double f_tol) {
-  const double c = e.d2 * e.d2 / (4.0 * e.d1 * e.d1) - e.d3 / (6.0 * e.d1);
   const double ad = std::abs(delta);
-  return ad <= 1e-4 * bracket && e.d1 * std::abs(c) * ad * ad * ad <= 0.125 * f_tol;
+  if (!(ad <= 1e-4 * bracket)) return false;
+  // g1 |C| |delta|^3 <= f_tol / 8, multiplied through by g1 > 0 (no division).
+  const double g1c = std::abs(0.25 * e.d2 * e.d2 - e.d3 * e.d1 / 6.0);
+  return g1c * ad * ad * ad <= 0.125 * f_tol * e.d1;
 }
 
 template <class Eval>
@@ -131,7 +133,8 @@ RootResult safeguarded_halley(Eval&& eval, double lo, double hi, double x0, doub
     double next = 0.5 * (lo + hi);
     bool in_bracket = false;
     if (e.d1 > 0.0) {
-      const double dn = -e.g / e.d1, denom = 1.0 + 0.5 * dn * e.d2 / e.d1;
+      const double inv_d1 = 1.0 / e.d1;
+      const double dn = -e.g * inv_d1, denom = 1.0 + 0.5 * dn * e.d2 * inv_d1;
       const bool halley = denom >= 0.5;
       const double delta = halley ? dn / denom : dn;
       const double candidate = x + delta;
