@@ -102,7 +102,7 @@ struct RadialQuadrant {
     }
     Angle at = start;  // the last evaluated angle, with its cosine and sine
     auto eval = [&](double s) {
-      if (s != at.s) at = {s, std::cos(s), std::sin(s)};
+      at = math::moved_to(at, s);
       const double h = g->hr_parametric(at.cs, at.ss);
       return std::pair<double, double>(S.omega(s, at.cs, at.ss) - target, ab / (1.0 + h));
     };
@@ -113,15 +113,7 @@ struct RadialQuadrant {
     const math::RootResult root = math::safeguarded_newton(eval, 0.0, math::kHalfPi, start.s, tol,
                                                            0.0, kRadialMaxEvaluations, final_step);
     if (iterations) *iterations = root.iterations;
-    if (root.x == at.s) return at;
-    // One step past the last evaluation: for |delta| <= 1e-6 the sine and cosine follow from
-    // those at s by Taylor to second order (the cubic term, < 2e-19, is below rounding).
-    const double delta = root.x - at.s;
-    if (std::abs(delta) <= 1e-6) {
-      const double q = 0.5 * delta * delta;
-      return {root.x, at.cs - at.ss * delta - at.cs * q, at.ss + at.cs * delta - at.ss * q};
-    }
-    return {root.x, std::cos(root.x), std::sin(root.x)};
+    return math::moved_to(at, root.x);
   }
 
   // Local-frame direction for quadrant k, parametric angle s and eps2 (eq. 22, reversed).

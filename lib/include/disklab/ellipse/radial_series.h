@@ -7,6 +7,7 @@
 
 #include "disklab/ellipse/map_geometry.h"
 #include "disklab/math/constants.h"
+#include "disklab/math/rotation.h"
 
 namespace disklab::ellipse {
 
@@ -25,9 +26,7 @@ constexpr std::size_t series_kernel_offset(int n, int max_row) {
 }  // namespace detail
 
 // A parametric angle s of the radial maps with its cosine and sine (computed once, used twice).
-struct ParametricAngle {
-  double s, cs, ss;
-};
+using ParametricAngle = math::AngleCosSin;
 
 // Omega_r(s) as a short trigonometric series, built once per shading point (the hot path of the
 // exact maps; beyond the paper). In the parametric angle s the integrand of eq. (16) is
@@ -184,28 +183,14 @@ struct RadialSeries {
     return true;
   }
   // The seed for t in [0, 1] with its cosine and sine, from one sincos of tau: s = tau + delta
-  // (shifted).
-  static constexpr double kSmallDelta = 0.05;
+  // (math::moved_to).
   ParametricAngle seed(double t) const {
     const double tau = t * math::kHalfPi;
-    const double ct = std::cos(tau), st = std::sin(tau);
-    if (n_seed == 0) return {tau, ct, st};
-    return shifted({tau, ct, st}, sine_sum(b + n, n_seed, (ct - st) * (ct + st), 2.0 * st * ct));
-  }
-
-  // The angle base.s + delta with its cosine and sine from base's by the angle sum, with Taylor
-  // polynomials for delta's own while |delta| <= kSmallDelta (degrees 8 and 9: remainders below
-  // 3e-20 there).
-  static ParametricAngle shifted(ParametricAngle base, double delta) {
-    const double s = base.s + delta;
-    if (std::abs(delta) > kSmallDelta) return {s, std::cos(s), std::sin(s)};
-    const double d2 = delta * delta;
-    const double cd =
-        1.0 - d2 * (1.0 / 2.0 - d2 * (1.0 / 24.0 - d2 * (1.0 / 720.0 - d2 * (1.0 / 40320.0))));
-    const double sd =
-        delta *
-        (1.0 - d2 * (1.0 / 6.0 - d2 * (1.0 / 120.0 - d2 * (1.0 / 5040.0 - d2 * (1.0 / 362880.0)))));
-    return {s, base.cs * cd - base.ss * sd, base.ss * cd + base.cs * sd};
+    const ParametricAngle base{tau, std::cos(tau), std::sin(tau)};
+    if (n_seed == 0) return base;
+    const double delta =
+        sine_sum(b + n, n_seed, (base.cs - base.ss) * (base.cs + base.ss), 2.0 * base.ss * base.cs);
+    return math::moved_to(base, tau + delta);
   }
 
  private:
