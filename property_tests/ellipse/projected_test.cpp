@@ -227,7 +227,7 @@ TEST(Projected, RootSolvesMeetTheirTolerance) {
     double worst_s = 0.0, worst_t = 0.0;
     for (int i = 0; i < 20000; ++i) {
       const double u1 = rng.next_double(), u2 = rng.next_double();
-      const double s = m.solve_s(u1, nullptr);
+      const double s = m.solve_s(u1, nullptr).s;
       const double target = u1 * 2.0 * m.P;
       // Clipped pieces can sum terms larger than P: their rounding, measured as the spread of C
       // over s's neighbouring doubles (where C itself moves by ~1e-16 of its slope), is what the
@@ -244,7 +244,7 @@ TEST(Projected, RootSolvesMeetTheirTolerance) {
       const auto md = m.meridian(s, m.clipped ? m.pieces.kind[m.piece_of(s)] : 1);
       if (!(md.t_hi > md.t_lo)) continue;
       int evals = 0;
-      const double x = m.solve_x(md, u2, &evals);
+      const double x = m.solve_x(md, u2, &evals).s;
       worst_t = std::max(worst_t, std::abs(m.G(md, x) - u2 * m.G_range(md)) / m.G_range(md));
     }
     EXPECT_LE(worst_s, ellipse::kProjectedNewtonTol + kEvalRounding) << c.name;

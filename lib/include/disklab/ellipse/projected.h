@@ -38,6 +38,7 @@
 #include "disklab/ellipse/sampler.h"
 #include "disklab/math/constants.h"
 #include "disklab/math/roots.h"
+#include "disklab/math/rotation.h"
 #include "disklab/types.h"
 
 namespace disklab::ellipse {
@@ -51,20 +52,24 @@ namespace projected_detail {
 // the difference would cancel), sum_{k>=1} (-1)^(k+1) (2t)^(2k+1) / (4 (2k+1)!).
 inline double S(double t) {
   if (t < 0.5) {
-    // (x^3 / 4) sum_{k>=1} (-1)^(k+1) y^(k-1) / (2k+1)!, x = 2t, y = x^2 <= 1: ten terms leave
-    // a remainder below y^10 / 23! < 4e-23 of the sum.
+    // (x^3 / 4) sum_{k>=1} (-1)^(k+1) y^(k-1) / (2k+1)!, x = 2t, y = x^2 <= 1. The sum is
+    // alternating and above 0.158: K terms leave a remainder below y^K / (2K+3)! / 0.158, under
+    // 1.1e-16 with K = 3 for y < 1e-4, K = 5 for y < 1e-2 and K = 8 up to y = 1.
     const double x = 2.0 * t, y = x * x;
-    const double p =
-        1.0 / 6 -
-        y * (1.0 / 120 -
-             y * (1.0 / 5040 -
-                  y * (1.0 / 362880 -
-                       y * (1.0 / 39916800 -
-                            y * (1.0 / 6227020800 -
-                                 y * (1.0 / 1307674368000 -
-                                      y * (1.0 / 355687428096000 -
-                                           y * (1.0 / 121645100408832000 -
-                                                y * (1.0 / 51090942171709440000.0)))))))));
+    double p;
+    if (y < 1e-4) {
+      p = 1.0 / 6 - y * (1.0 / 120 - y * (1.0 / 5040));
+    } else if (y < 1e-2) {
+      p = 1.0 / 6 - y * (1.0 / 120 - y * (1.0 / 5040 - y * (1.0 / 362880 - y * (1.0 / 39916800))));
+    } else {
+      p = 1.0 / 6 -
+          y * (1.0 / 120 -
+               y * (1.0 / 5040 -
+                    y * (1.0 / 362880 -
+                         y * (1.0 / 39916800 -
+                              y * (1.0 / 6227020800 -
+                                   y * (1.0 / 1307674368000 - y * (1.0 / 355687428096000)))))));
+    }
     return 0.25 * x * y * p;
   }
   return 0.25 * (2.0 * t - std::sin(2.0 * t));
@@ -165,10 +170,12 @@ struct ProjectedMap {
   struct Meridian {
     double cs = 1.0, ss = 0.0;  // cos s, sin s
     double r2 = 0.0, r = 0.0;   // planar radius of the rim point
+    double hr = 1.0;            // h_r: (r, h_r) are the rim's sin t_r and cos t_r
     double cos_phi = 1.0, sin_phi = 0.0;
     double A = 0.0, B = 0.0;
     double t_r = 0.0;               // rim angle from z_e
     double t_lo = 0.0, t_hi = 0.0;  // the part above the horizon (t_lo == t_hi: none)
+    double sin_lo = 0.0, cos_lo = 1.0;
     int kind = 0;  // 0 empty, 1 rim over apex, 2 horizon over apex, 3 rim over horizon
     // G(x) = F(t_lo + x) - F(t_lo) = ga S(x) + gb sin^2(x) / 2 + gc (x - S(x)) (see G()).
     double ga = 0.0, gb = 0.0, gc = 0.0;
@@ -273,7 +280,9 @@ struct ProjectedMap {
     md.A = n.x() * md.cos_phi + n.y() * md.sin_phi;
     md.B = n.y() * md.cos_phi - n.x() * md.sin_phi;
     const double hr = g.hr_parametric(cs, ss);
-    md.t_r = std::atan2(md.r, hr);
+    md.hr = hr;
+    // t_r = atan2(r, h_r) by asin of the smaller of the two (r^2 + h_r^2 = 1 to rounding).
+    md.t_r = md.r <= hr ? std::asin(md.r) : math::kHalfPi - std::asin(hr);
     const double nz = n.z();
     if (kind < 0) {
       if (nz > 0.0)
@@ -282,7 +291,8 @@ struct ProjectedMap {
         kind = md.A > 0.0 && std::atan2(-nz, md.A) < md.t_r ? 3 : 0;
     }
     md.kind = kind;
-    double sin_lo = 0.0, cos_lo = 1.0;
+    double& sin_lo = md.sin_lo;
+    double& cos_lo = md.cos_lo;
     switch (kind) {
       case 1:  // the whole meridian
         md.t_hi = md.t_r;
@@ -424,7 +434,10 @@ struct ProjectedMap {
     return series_twice_c_derivatives(s, cs, ss).g;
   }
   // The same with its first three derivatives (2 dC/ds = a b [n_z + 2 n_x a Jc' + 2 n_y b Js'],
-  // Jc' = sum c_j cos (2j+1)s, Js' = sum d_j sin (2j+1)s, differentiated term by term).
+  // Jc' = sum c_j cos (2j+1)s, Js' = sum d_j sin (2j+1)s, differentiated term by term). Each
+  // harmonic k = 2j + 1 enters through p = 2 n_x a c_j and q = 2 n_y b d_j: the value takes
+  // (p sin ks + q (1 - cos ks)) / k, the derivatives u = p cos ks + q sin ks (first; -k^2 u the
+  // third) and k (q cos ks - p sin ks) (second).
   math::Derivatives3 series_twice_c_derivatives(double s, double cs, double ss) const {
     const int nt = series.n;
     // cos, sin of k s, k = 2j + 1, by the rotation (cos 2s, sin 2s), and 1 - cos ks by the same
@@ -432,36 +445,31 @@ struct ProjectedMap {
     // are all positive for small s (no 1 - cos cancellation, no division).
     const double c2 = cs * cs - ss * ss, s2 = 2.0 * cs * ss, two_ss2 = 2.0 * ss * ss;
     double ck = cs, sk = ss, omc = cs >= 0.0 ? ss * ss / (1.0 + cs) : 1.0 - cs;
-    double jc = 0.0, js = 0.0;
-    double d1c = 0.0, d1s = 0.0, d2c = 0.0, d2s = 0.0, d3c = 0.0, d3s = 0.0;
+    const double x = 2.0 * n.x() * g.a, y = 2.0 * n.y() * g.b;
+    double v = 0.0, d1 = 0.0, d2 = 0.0, d3 = 0.0;
     double gj = series.g0;
     for (int j = 0; j <= nt; ++j) {
-      const double k = 2.0 * j + 1.0, inv_k = kInverseOdd[j];
+      const double k = 2.0 * j + 1.0;
       const double gj1 = j < nt ? series.g[j] : 0.0;
       const double extra = j == 0 ? 0.5 * gj : 0.0;
-      const double cj = 0.5 * (gj + gj1) + extra, dj = 0.5 * (gj - gj1) + extra;
+      const double p = x * (0.5 * (gj + gj1) + extra), q = y * (0.5 * (gj - gj1) + extra);
       gj = gj1;
-      jc += cj * sk * inv_k;
-      js += dj * omc * inv_k;
-      const double ccos = cj * ck, csin = cj * sk, dcos = dj * ck, dsin = dj * sk;
-      d1c += ccos;
-      d1s += dsin;
-      d2c -= k * csin;
-      d2s += k * dcos;
-      d3c -= k * k * ccos;
-      d3s -= k * k * dsin;
+      const double u = p * ck + q * sk;
+      v += (p * sk + q * omc) * kInverseOdd[j];
+      d1 += u;
+      d2 += k * (q * ck - p * sk);
+      d3 -= k * k * u;
       omc = omc * c2 + two_ss2 + sk * s2;
       const double cn = ck * c2 - sk * s2;
       sk = sk * c2 + ck * s2;
       ck = cn;
     }
-    const double ab = g.a * g.b, x = 2.0 * n.x() * g.a, y = 2.0 * n.y() * g.b;
-    return {ab * (n.z() * s + x * jc + y * js), ab * (n.z() + x * d1c + y * d1s),
-            ab * (x * d2c + y * d2s), ab * (x * d3c + y * d3s)};
+    const double ab = g.a * g.b;
+    return {ab * (n.z() * s + v), ab * (n.z() + d1), ab * d2, ab * d3};
   }
 
-  // u.x -> s.
-  double solve_s(double u1, int* iterations) const {
+  // u.x -> s, with its cosine and sine.
+  math::AngleCosSin solve_s(double u1, int* iterations) const {
     const double total = 2.0 * P, target = std::clamp(u1, 0.0, 1.0) * total;
     double lo = 0.0, hi = math::kTwoPi, base = 0.0;
     int piece = -1;
@@ -479,14 +487,19 @@ struct ProjectedMap {
     const double x0 = lo + frac * (hi - lo), f_tol = kProjectedNewtonTol * total;
     math::RootResult root;
     if (!clipped && series.n > 0) {
-      // The series gives C's derivatives for Halley's step.
+      // The series gives C's derivatives for Halley's step; each iterate's cosine and sine
+      // follow from the last one's (math::moved_to).
+      math::AngleCosSin at{x0, std::cos(x0), std::sin(x0)};
       root = math::safeguarded_halley(
           [&](double s) {
-            math::Derivatives3 d = series_twice_c_derivatives(s, std::cos(s), std::sin(s));
+            at = math::moved_to(at, s);
+            math::Derivatives3 d = series_twice_c_derivatives(s, at.cs, at.ss);
             d.g -= target;
             return d;
           },
           lo, hi, x0, f_tol, 1e-16, kRadialMaxEvaluations);
+      if (iterations) *iterations = root.iterations;
+      return math::moved_to(at, root.x);
     } else {
       auto eval = [&](double s) {
         const Meridian md = meridian(s, clipped ? pieces.kind[piece] : 1);
@@ -501,12 +514,16 @@ struct ProjectedMap {
           [&](double, double delta) { return std::abs(delta) <= final_step; });
     }
     if (iterations) *iterations = root.iterations;
-    return root.x;
+    return {root.x, std::cos(root.x), std::sin(root.x)};
   }
 
-  // u.y -> x = t - t_lo on the meridian: G(x) = u.y G(t_hi - t_lo).
-  double solve_x(const Meridian& md, double u2, int* iterations) const {
-    const double range = md.t_hi - md.t_lo, sr = std::sin(range), cr = std::cos(range);
+  // u.y -> x = t - t_lo on the meridian, G(x) = u.y G(t_hi - t_lo), with its cosine and sine.
+  math::AngleCosSin solve_x(const Meridian& md, double u2, int* iterations) const {
+    const double range = md.t_hi - md.t_lo;
+    // From the apex to the rim, sin and cos of the range are the rim's (r, h_r).
+    const bool apex_to_rim = md.t_lo == 0.0 && md.t_hi == md.t_r;
+    const double sr = apex_to_rim ? md.r : std::sin(range);
+    const double cr = apex_to_rim ? md.hr : std::cos(range);
     const double total = G(md, range, sr, cr);
     const double f = std::clamp(u2, 0.0, 1.0), target = f * total;
     // G' = ga sin^2 x + gb sin x cos x + gc cos^2 x, G'' = (ga - gc) sin 2x + gb cos 2x,
@@ -518,43 +535,40 @@ struct ProjectedMap {
                                 d * s2x + md.gb * c2x, 2.0 * (d * c2x - md.gb * s2x)};
     };
     // The start, sin^2 x = u.y sin^2(range): exact where G is gb sin^2(x) / 2 alone (the cosine
-    // n_z cos t about the apex), and there sin x and cos x are known without a call: one Halley
-    // step from it costs no trigonometry, and is final by safeguarded_halley's own rule.
+    // n_z cos t about the apex), and there sin x and cos x are known without a call (cos^2 x =
+    // cos^2(range) + (1 - u.y) sin^2(range), two non-negative terms); the later iterates' follow
+    // by rotation (math::moved_to).
     const double f_tol = kProjectedNewtonTol * std::abs(total);
-    double x0 = f * range;
+    math::AngleCosSin at;
     if (range <= math::kHalfPi) {
-      const double sx = std::sqrt(f) * sr, cx = std::sqrt(std::max(0.0, 1.0 - sx * sx));
-      x0 = std::min(std::asin(sx), range);  // asin(sin(range)) may round above range
-      const math::Derivatives3 e = derivatives(x0, sx, cx);
-      if (iterations) *iterations += 1;
-      if (!(std::abs(e.g) > f_tol)) return x0;
-      if (e.d1 > 0.0) {
-        const double dn = -e.g / e.d1, denom = 1.0 + 0.5 * dn * e.d2 / e.d1;
-        if (denom >= 0.5) {
-          const double delta = dn / denom, x1 = x0 + delta;
-          if (x1 > 0.0 && x1 < range) {
-            if (math::halley_step_is_final(e, delta, range, f_tol)) return x1;
-            x0 = x1;
-          }
-        }
-      }
+      const double sx = std::sqrt(f) * sr, cx = std::sqrt(cr * cr + (1.0 - f) * sr * sr);
+      // The angle from the better conditioned of the two (x, sin x and cos x consistent to an
+      // ulp); asin(sin(range)) may round above range.
+      at = {std::min(sx <= cx ? std::asin(sx) : std::acos(cx), range), cx, sx};
+    } else {
+      const double x0 = f * range;
+      at = {x0, std::cos(x0), std::sin(x0)};
     }
     const math::RootResult root = math::safeguarded_halley(
-        [&](double x) { return derivatives(x, std::sin(x), std::cos(x)); }, 0.0, range,
-        std::clamp(x0, 0.0, range), f_tol, 1e-17, kRadialMaxEvaluations);
+        [&](double x) {
+          at = math::moved_to(at, x);
+          return derivatives(x, at.ss, at.cs);
+        },
+        0.0, range, at.s, f_tol, 1e-17, kRadialMaxEvaluations);
     if (iterations) *iterations += root.iterations;
-    return root.x;
+    return math::moved_to(at, root.x);
   }
 
   EllipseSample sample(Point2 u, int* iterations = nullptr) const {
     if (iterations) *iterations = 0;
     if (g.empty || !in_unit_square(u)) return {};
-    const double s = solve_s(u.x, iterations);
-    const Meridian md = meridian(s, clipped ? pieces.kind[piece_of(s)] : 1);
+    const math::AngleCosSin s = solve_s(u.x, iterations);
+    const Meridian md = meridian(s.cs, s.ss, clipped ? pieces.kind[piece_of(s.s)] : 1);
     if (md.kind == 0 || !(md.t_hi > md.t_lo)) return {};
-    const double t = md.t_lo + solve_x(md, u.y, iterations);
-    const double st = std::sin(t);
-    const Vec3 local(st * md.cos_phi, st * md.sin_phi, std::cos(t));
+    // t = t_lo + x: its sine and cosine by the rotation (exact from the apex, t_lo = 0).
+    const math::AngleCosSin x = solve_x(md, u.y, iterations);
+    const double st = md.sin_lo * x.cs + md.cos_lo * x.ss, ct = md.cos_lo * x.cs - md.sin_lo * x.ss;
+    const Vec3 local(st * md.cos_phi, st * md.sin_phi, ct);
     EllipseSample out;
     out.local = local;
     out.direction = g.to_world(local).normalized();
