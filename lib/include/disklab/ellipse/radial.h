@@ -77,9 +77,13 @@ struct RadialQuadrant {
   // h_r, and |sin|, |cos| grow by at most |delta| over the step while h_r >= cos(alpha): M below.
   // math::safeguarded_newton's bracket and bisection fallback; `iterations` counts evaluations
   // of Omega_r.
+  // Without s0, the start is the series' reversion (RadialSeries::reverted_start) where there
+  // is a series, else the planar ellipse's tau = t pi / 2.
   Angle solve(double t, int* iterations = nullptr, double s0 = -1.0) const {
-    const double s = (s0 >= 0.0 && s0 <= math::kHalfPi) ? s0 : t * math::kHalfPi;
-    return solve_from(t, {s, std::cos(s), std::sin(s)}, iterations);
+    const bool given = s0 >= 0.0 && s0 <= math::kHalfPi;
+    const double s = given ? s0 : std::clamp(t, 0.0, 1.0) * math::kHalfPi;
+    const Angle base{s, std::cos(s), std::sin(s)};
+    return solve_from(t, given || !use_series() ? base : series->reverted_start(base), iterations);
   }  // The same from a start with its cosine and sine already known (radial-fast's seed).
   Angle solve_from(double t, Angle start, int* iterations = nullptr) const {
     if (!use_series()) {

@@ -170,6 +170,19 @@ struct RadialSeries {
     return y1 * sin2;
   }
 
+  // A start for the inverse, s with Omega_r(s) = a_0 tau (tau = t pi / 2), from the series alone:
+  // with beta_k = b_k / a_0, s = tau - sum beta_k sin(2 k s), reverted to second order in the
+  // first two harmonics, s ~ tau - beta_1 sin 2tau + (beta_1^2 - beta_2) sin 4tau. Its error is
+  // O(beta^3), and beta_1 = O(a^2 - b^2): for all but close, eccentric ellipses one Newton step
+  // from it meets the tolerance. Clamped to [0, pi/2] (exact at both ends).
+  ParametricAngle reverted_start(const ParametricAngle& base) const {
+    if (n == 0) return base;
+    const double beta1 = b[0] / a0, beta2 = n > 1 ? b[1] / a0 : 0.0;
+    const double cos2 = (base.cs - base.ss) * (base.cs + base.ss), sin2 = 2.0 * base.ss * base.cs;
+    const double delta = sin2 * (-beta1 + 2.0 * cos2 * (beta1 * beta1 - beta2));
+    return math::moved_to(base, std::clamp(base.s + delta, 0.0, math::kHalfPi));
+  }
+
   // ---- the inverse map's seed (radial-fast) ----
   // s(t) ~ tau + sum_k c_k sin(2 k tau), tau = t pi / 2: the radial map's parametric angle as a
   // function of the quadrant fraction t (the planar ellipse's answer is s = tau exactly).
