@@ -201,9 +201,15 @@ struct ProjectedMap {
       1.0 / 15, 1.0 / 17, 1.0 / 19, 1.0 / 21, 1.0 / 23, 1.0 / 25};
   struct Series {
     int n = 0;
+    int n_model = 0;  // the model: the first n_model terms (0: none; see solve_s)
     double g0 = 0.0;
     double g[kSeriesCapacity] = {};
   };
+  // The model's truncation, relative to the total 2 P, and the least strength of the first
+  // harmonic (relative to n_z) for which solve_s takes the model's step first: below it, the
+  // start is already close enough for a single evaluation of the full series.
+  static constexpr double kModelTruncation = 1e-7;
+  static constexpr double kModelFirstHarmonic = 1e-3;
 
   MapGeometry g;
   Vec3 n = Vec3::UnitZ();  // the receiver normal (unit) in R_e
@@ -438,8 +444,10 @@ struct ProjectedMap {
   // harmonic k = 2j + 1 enters through p = 2 n_x a c_j and q = 2 n_y b d_j: the value takes
   // (p sin ks + q (1 - cos ks)) / k, the derivatives u = p cos ks + q sin ks (first; -k^2 u the
   // third) and k (q cos ks - p sin ks) (second).
-  math::Derivatives3 series_twice_c_derivatives(double s, double cs, double ss) const {
-    const int nt = series.n;
+  // The first `terms` terms only (the model; all by default).
+  math::Derivatives3 series_twice_c_derivatives(double s, double cs, double ss,
+                                                int terms = -1) const {
+    const int nt = series.n, last = terms < 0 ? nt : std::min(nt, terms - 1);
     // cos, sin of k s, k = 2j + 1, by the rotation (cos 2s, sin 2s), and 1 - cos ks by the same
     // rotation, 1 - cos(k + 2)s = (1 - cos ks) cos 2s + 2 sin^2 s + sin ks sin 2s, whose terms
     // are all positive for small s (no 1 - cos cancellation, no division).
@@ -448,11 +456,10 @@ struct ProjectedMap {
     const double x = 2.0 * n.x() * g.a, y = 2.0 * n.y() * g.b;
     double v = 0.0, d1 = 0.0, d2 = 0.0, d3 = 0.0;
     double gj = series.g0;
-    for (int j = 0; j <= nt; ++j) {
+    for (int j = 0; j <= last; ++j) {
       const double k = 2.0 * j + 1.0;
       const double gj1 = j < nt ? series.g[j] : 0.0;
-      const double extra = j == 0 ? 0.5 * gj : 0.0;
-      const double p = x * (0.5 * (gj + gj1) + extra), q = y * (0.5 * (gj - gj1) + extra);
+      const auto [p, q] = harmonic(j, gj, gj1, x, y);
       gj = gj1;
       const double u = p * ck + q * sk;
       v += (p * sk + q * omc) * kInverseOdd[j];
@@ -466,6 +473,36 @@ struct ProjectedMap {
     }
     const double ab = g.a * g.b;
     return {ab * (n.z() * s + v), ab * (n.z() + d1), ab * d2, ab * d3};
+  }
+
+  // Term j's p and q from g_j and g_{j+1}, x = 2 n_x a and y = 2 n_y b: c_j = (g_j + g_{j+1}) / 2
+  // and d_j = (g_j - g_{j+1}) / 2, each with g_0 / 2 more for j = 0.
+  static std::pair<double, double> harmonic(int j, double gj, double gj1, double x, double y) {
+    const double extra = j == 0 ? 0.5 * gj : 0.0;
+    return {x * (0.5 * (gj + gj1) + extra), y * (0.5 * (gj - gj1) + extra)};
+  }
+  // The first harmonic's p_0 and q_0 (2 C = a b (n_z s + p_0 sin s + q_0 (1 - cos s) + ...)).
+  std::pair<double, double> first_harmonic() const {
+    return harmonic(0, series.g0, series.n > 0 ? series.g[0] : 0.0, 2.0 * n.x() * g.a,
+                    2.0 * n.y() * g.b);
+  }
+  // From x0 = 2 pi u.x, the root of n_z s + h(s) = n_z x0 for the first harmonic h alone, by
+  // Lagrange's inversion to third order: s = x0 - r (1 - r1 + r1^2 + r r2 / 2) with r, r1, r2
+  // = h, h', h'' at x0 over n_z; its error is O(e^4), e = |(p_0, q_0)| / n_z. x0 itself where
+  // e > 1/2 (the series converges for e below about 0.66) or e < kModelFirstHarmonic (x0 is
+  // then close enough).
+  math::AngleCosSin reverted_start(const math::AngleCosSin& at, double lo, double hi) const {
+    const auto [p0, q0] = first_harmonic();
+    const double nz = n.z();
+    const double e2 = p0 * p0 + q0 * q0;
+    if (!(e2 <= 0.25 * nz * nz) || e2 < kModelFirstHarmonic * kModelFirstHarmonic * nz * nz)
+      return at;
+    const double omc = at.cs >= 0.0 ? at.ss * at.ss / (1.0 + at.cs) : 1.0 - at.cs;
+    const double inv_nz = 1.0 / nz;
+    const double r = (p0 * at.ss + q0 * omc) * inv_nz, r1 = (p0 * at.cs + q0 * at.ss) * inv_nz;
+    const double r2 = (q0 * at.cs - p0 * at.ss) * inv_nz;
+    const double delta = -r * (1.0 - r1 + r1 * r1 + 0.5 * r * r2);
+    return math::moved_to(at, std::clamp(at.s + delta, lo, hi));
   }
 
   // u.x -> s, with its cosine and sine.
@@ -488,8 +525,22 @@ struct ProjectedMap {
     math::RootResult root;
     if (!clipped && series.n > 0) {
       // The series gives C's derivatives for Halley's step; each iterate's cosine and sine
-      // follow from the last one's (math::moved_to).
-      math::AngleCosSin at{x0, std::cos(x0), std::sin(x0)};
+      // follow from the last one's (math::moved_to). The start reverts the first harmonic
+      // (reverted_start); where that harmonic is strong, one Halley step of the model (the
+      // first few harmonics: cheaper) takes it to within the model's truncation of the root,
+      // where one evaluation of the full series usually ends the solve.
+      math::AngleCosSin at = reverted_start({x0, std::cos(x0), std::sin(x0)}, lo, hi);
+      double start = at.s;
+      int evaluations = 0;
+      if (series.n_model > 0) {
+        const math::Derivatives3 e = series_twice_c_derivatives(at.s, at.cs, at.ss, series.n_model);
+        evaluations = 1;
+        if (e.d1 > 0.0) {
+          const double dn = -(e.g - target) / e.d1, denom = 1.0 + 0.5 * dn * e.d2 / e.d1;
+          const double next = at.s + (denom >= 0.5 ? dn / denom : dn);
+          if (next > lo && next < hi) start = next;
+        }
+      }
       root = math::safeguarded_halley(
           [&](double s) {
             at = math::moved_to(at, s);
@@ -497,8 +548,8 @@ struct ProjectedMap {
             d.g -= target;
             return d;
           },
-          lo, hi, x0, f_tol, 1e-16, kRadialMaxEvaluations);
-      if (iterations) *iterations = root.iterations;
+          lo, hi, start, f_tol, 1e-16, kRadialMaxEvaluations);
+      if (iterations) *iterations = evaluations + root.iterations;
       return math::moved_to(at, root.x);
     } else {
       auto eval = [&](double s) {
@@ -629,6 +680,35 @@ struct ProjectedMap {
       series.g0 = fit.a0;
       for (int k = 1; k <= fit.n; ++k)
         series.g[k - 1] = 2.0 * k * fit.b[k - 1];
+      choose_model();
+    }
+  }
+
+  // The model of solve_s: the fewest leading terms whose dropped tail bounds 2 C's error by
+  // kModelTruncation of 2 P (term j's value is a b (p sin ks + q (1 - cos ks)) / k, at most
+  // a b (|p| + 2 |q|) / k), kept only if it drops at least two terms and the first harmonic
+  // is strong enough for the reverted start to need more than one evaluation.
+  void choose_model() {
+    const int nt = series.n;
+    const double x = 2.0 * n.x() * g.a, y = 2.0 * n.y() * g.b, ab = g.a * g.b;
+    double bound[kSeriesCapacity + 1];
+    double gj = series.g0;
+    for (int j = 0; j <= nt; ++j) {
+      const double gj1 = j < nt ? series.g[j] : 0.0;
+      const auto [p, q] = harmonic(j, gj, gj1, x, y);
+      gj = gj1;
+      bound[j] = ab * (std::abs(p) + 2.0 * std::abs(q)) * kInverseOdd[j];
+    }
+    series.n_model = 0;
+    const auto [p0, q0] = first_harmonic();
+    if (!(p0 * p0 + q0 * q0 >= kModelFirstHarmonic * kModelFirstHarmonic * n.z() * n.z())) return;
+    const double limit = kModelTruncation * 2.0 * P;
+    double tail = 0.0;
+    int terms = nt + 1;
+    while (terms > 1 && tail + bound[terms - 1] <= limit)
+      tail += bound[--terms];
+    if (terms + 2 <= nt + 1) {
+      series.n_model = terms;
     }
   }
 
