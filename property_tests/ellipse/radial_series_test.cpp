@@ -88,5 +88,43 @@ TEST(RadialSeries, MatchesSolidAngleOnRandomScenesFromNearToFar) {
               w.fallbacks, w.err);
 }
 
+// The reverted start (RadialSeries::reverted_start) against the converged root: second order
+// in the harmonics, so its error is third order, below kReversionBound (|beta_1|^3 + |beta_1
+// beta_2| + |beta_3|) with beta_k = b_k / a_0 (the single-harmonic inversion's third-order
+// coefficients are 1/2 and 3/2, the cross terms' at most 3: 4 covers them), plus the root's own
+// tolerance; and never further from the root than the planar start tau.
+constexpr double kReversionBound = 4.0;
+
+TEST(RadialSeries, RevertedStartIsThirdOrderClose) {
+  int scenes = 0;
+  double worst_ratio = 0.0;
+  for (uint64_t seed = 0; seed < 400; ++seed) {
+    const Scene sc = random_scene(seed, -3.0, 8.0);
+    Vec3 normal = sc.disk.normal;
+    if ((sc.point - sc.disk.center).dot(normal) < 0.0) normal = -normal;
+    const auto g = ellipse::MapGeometry::make(
+        ellipse::Disk{sc.disk.center, normal, sc.disk.radius, false}, sc.point);
+    if (g.empty) continue;
+    const auto series = ellipse::RadialSeries::make(g);
+    if (series.n == 0) continue;
+    ++scenes;
+    auto beta = [&](int k) { return k <= series.n ? series.b[k - 1] / series.a0 : 0.0; };
+    const double b1 = std::abs(beta(1)), b2 = std::abs(beta(2)), b3 = std::abs(beta(3));
+    const double bound = kReversionBound * (b1 * b1 * b1 + b1 * b2 + b3) + 1e-14;
+    const ellipse::RadialQuadrant q{&g, &series};
+    for (int i = 1; i < kGrid; ++i) {
+      const double t = static_cast<double>(i) / kGrid, tau = t * math::kHalfPi;
+      const double root = q.solve(t).s;
+      const double start = series.reverted_start({tau, std::cos(tau), std::sin(tau)}).s;
+      const double err = std::abs(start - root);
+      ASSERT_LE(err, bound) << sc.describe() << " t=" << t << " beta1=" << beta(1);
+      ASSERT_LE(err, std::abs(tau - root) + 1e-14) << sc.describe() << " t=" << t;
+      worst_ratio = std::max(worst_ratio, (err - 1e-14) / (bound - 1e-14));
+    }
+  }
+  std::printf("  %d scenes with a series: worst start error %.3g of its bound\n", scenes,
+              worst_ratio);
+}
+
 }  // namespace
 }  // namespace disklab::test
