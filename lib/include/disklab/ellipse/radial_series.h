@@ -104,13 +104,25 @@ struct RadialSeries {
     // DCT-I: a_k = (2/n) sum'' dg_j cos(j k pi / n); a_0 and a_n halved once more. For k >= 1
     // the constant g0 contributes sum'' cos(j k pi / n) = 0.
     const double* kernel = tab.kernel + kernel_offset(n);
+    // The kernel's symmetry cos((n - j) k pi / n) = (-1)^k cos(j k pi / n) folds the nodes in
+    // pairs, sum_j = sum_{j < n/2} (dg_j +- dg_{n-j}) cos(j k pi / n) + dg_{n/2} cos(k pi / 2):
+    // half the products (the dg_j share a sign, so the even fold adds without cancelling).
+    const int half = n / 2;
+    double fold_even[kMaxDegree / 2], fold_odd[kMaxDegree / 2];
+    for (int j = 1; j < half; ++j) {
+      fold_even[j] = dg[j] + dg[n - j];
+      fold_odd[j] = dg[j] - dg[n - j];
+    }
     auto coefficient = [&](int k) {
-      double sum = 0.5 * (dg[0] + ((k & 1) ? -dg[n] : dg[n]));
+      const bool odd = (k & 1) != 0;
+      double sum = 0.5 * (dg[0] + (odd ? -dg[n] : dg[n]));
+      if (!odd) sum += (k & 2) ? -dg[half] : dg[half];  // cos(k pi / 2) = (-1)^(k/2)
       const double* row = kernel + static_cast<std::size_t>(k) * static_cast<std::size_t>(n + 1);
+      const double* fold = odd ? fold_odd : fold_even;
       // Four partial sums: the loop is bound by the latency of the additions, not their count.
       double part[4] = {0.0, 0.0, 0.0, 0.0};
-      for (int j = 1; j < n; ++j)
-        part[j & 3] += dg[j] * row[j];
+      for (int j = 1; j < half; ++j)
+        part[j & 3] += fold[j] * row[j];
       sum += (part[0] + part[1]) + (part[2] + part[3]);
       return sum * (2.0 / n) * (k == n ? 0.5 : 1.0);
     };
