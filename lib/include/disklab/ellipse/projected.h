@@ -203,7 +203,7 @@ struct ProjectedMap {
     int n = 0;
     int n_model = 0;  // the model: the first n_model terms (0: none; see solve_s)
     double g0 = 0.0;
-    double g[kSeriesCapacity] = {};
+    double g[kSeriesCapacity + 1] = {};  // g[k - 1] = g_k; g[n] = 0 (the loops read it)
   };
   // The model's truncation, relative to the total 2 P, and the least strength of the first
   // harmonic (relative to n_z) for which solve_s takes the model's step first: below it, the
@@ -453,19 +453,21 @@ struct ProjectedMap {
     // are all positive for small s (no 1 - cos cancellation, no division).
     const double c2 = cs * cs - ss * ss, s2 = 2.0 * cs * ss, two_ss2 = 2.0 * ss * ss;
     double ck = cs, sk = ss, omc = cs >= 0.0 ? ss * ss / (1.0 + cs) : 1.0 - cs;
-    const double x = 2.0 * n.x() * g.a, y = 2.0 * n.y() * g.b;
-    double v = 0.0, d1 = 0.0, d2 = 0.0, d3 = 0.0;
-    double gj = series.g0;
-    for (int j = 0; j <= last; ++j) {
-      const double k = 2.0 * j + 1.0;
-      const double gj1 = j < nt ? series.g[j] : 0.0;
-      const auto [p, q] = harmonic(j, gj, gj1, x, y);
-      gj = gj1;
+    // p = 2 n_x a c_j = hx (g_j + g_{j+1}) and q = hy (g_j - g_{j+1}), j = 0 with 2 g_0.
+    const double hx = n.x() * g.a, hy = n.y() * g.b;
+    double p = hx * (2.0 * series.g0 + series.g[0]), q = hy * (2.0 * series.g0 - series.g[0]);
+    double v = 0.0, d1 = 0.0, d2 = 0.0, d3 = 0.0, k = 1.0;
+    for (int j = 0;; ++j) {
       const double u = p * ck + q * sk;
       v += (p * sk + q * omc) * kInverseOdd[j];
       d1 += u;
       d2 += k * (q * ck - p * sk);
       d3 -= k * k * u;
+      if (j == last) break;
+      const double ga = series.g[j], gb = series.g[j + 1];
+      p = hx * (ga + gb);
+      q = hy * (ga - gb);
+      k += 2.0;
       omc = omc * c2 + two_ss2 + sk * s2;
       const double cn = ck * c2 - sk * s2;
       sk = sk * c2 + ck * s2;
@@ -536,7 +538,8 @@ struct ProjectedMap {
         const math::Derivatives3 e = series_twice_c_derivatives(at.s, at.cs, at.ss, series.n_model);
         evaluations = 1;
         if (e.d1 > 0.0) {
-          const double dn = -(e.g - target) / e.d1, denom = 1.0 + 0.5 * dn * e.d2 / e.d1;
+          const double inv_d1 = 1.0 / e.d1;
+          const double dn = -(e.g - target) * inv_d1, denom = 1.0 + 0.5 * dn * e.d2 * inv_d1;
           const double next = at.s + (denom >= 0.5 ? dn / denom : dn);
           if (next > lo && next < hi) start = next;
         }
