@@ -96,7 +96,7 @@ struct RadialSeries {
       n *= 2;
     const auto& tab = tables();
     const int step = kMaxDegree / n;  // table stride for this degree
-    double dg[kMaxDegree + 1];
+    double dg[kMaxDegree + 1] = {};   // zeroed: GCC cannot see the loop fill dg[0..n]
     for (int j = 0; j <= n; ++j) {
       const auto at = static_cast<std::size_t>(j) * static_cast<std::size_t>(step);
       dg[j] = dg_at(tab.cos2_half[at], tab.sin2_half[at]);
@@ -108,7 +108,7 @@ struct RadialSeries {
     // pairs, sum_j = sum_{j < n/2} (dg_j +- dg_{n-j}) cos(j k pi / n) + dg_{n/2} cos(k pi / 2):
     // half the products (the dg_j share a sign, so the even fold adds without cancelling).
     const int half = n / 2;
-    double fold_even[kMaxDegree / 2], fold_odd[kMaxDegree / 2];
+    double fold_even[kMaxDegree / 2] = {}, fold_odd[kMaxDegree / 2] = {};
     for (int j = 1; j < half; ++j) {
       fold_even[j] = dg[j] + dg[n - j];
       fold_odd[j] = dg[j] - dg[n - j];
