@@ -30,6 +30,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <tuple>
 #include <utility>
 
 #include "disklab/ellipse/map_geometry.h"
@@ -453,9 +454,8 @@ struct ProjectedMap {
     // are all positive for small s (no 1 - cos cancellation, no division).
     const double c2 = cs * cs - ss * ss, s2 = 2.0 * cs * ss, two_ss2 = 2.0 * ss * ss;
     double ck = cs, sk = ss, omc = cs >= 0.0 ? ss * ss / (1.0 + cs) : 1.0 - cs;
-    // p = 2 n_x a c_j = hx (g_j + g_{j+1}) and q = hy (g_j - g_{j+1}), j = 0 with 2 g_0.
-    const double hx = n.x() * g.a, hy = n.y() * g.b;
-    double p = hx * (2.0 * series.g0 + series.g[0]), q = hy * (2.0 * series.g0 - series.g[0]);
+    double p, q;
+    std::tie(p, q) = harmonic(0);
     double v = 0.0, d1 = 0.0, d2 = 0.0, d3 = 0.0, k = 1.0;
     for (int j = 0;; ++j) {
       const double u = p * ck + q * sk;
@@ -464,9 +464,7 @@ struct ProjectedMap {
       d2 += k * (q * ck - p * sk);
       d3 -= k * k * u;
       if (j == last) break;
-      const double ga = series.g[j], gb = series.g[j + 1];
-      p = hx * (ga + gb);
-      q = hy * (ga - gb);
+      std::tie(p, q) = harmonic(j + 1);
       k += 2.0;
       omc = omc * c2 + two_ss2 + sk * s2;
       const double cn = ck * c2 - sk * s2;
@@ -477,16 +475,11 @@ struct ProjectedMap {
     return {ab * (n.z() * s + v), ab * (n.z() + d1), ab * d2, ab * d3};
   }
 
-  // Term j's p and q from g_j and g_{j+1}, x = 2 n_x a and y = 2 n_y b: c_j = (g_j + g_{j+1}) / 2
-  // and d_j = (g_j - g_{j+1}) / 2, each with g_0 / 2 more for j = 0.
-  static std::pair<double, double> harmonic(int j, double gj, double gj1, double x, double y) {
-    const double extra = j == 0 ? 0.5 * gj : 0.0;
-    return {x * (0.5 * (gj + gj1) + extra), y * (0.5 * (gj - gj1) + extra)};
-  }
-  // The first harmonic's p_0 and q_0 (2 C = a b (n_z s + p_0 sin s + q_0 (1 - cos s) + ...)).
-  std::pair<double, double> first_harmonic() const {
-    return harmonic(0, series.g0, series.n > 0 ? series.g[0] : 0.0, 2.0 * n.x() * g.a,
-                    2.0 * n.y() * g.b);
+  // Term j's p = 2 n_x a c_j and q = 2 n_y b d_j, c_j = (g_j + g_{j+1}) / 2 and d_j = (g_j -
+  // g_{j+1}) / 2, each with g_0 / 2 more for j = 0 (g[n] = 0 ends the series).
+  std::pair<double, double> harmonic(int j) const {
+    const double ga = j == 0 ? 2.0 * series.g0 : series.g[j - 1], gb = series.g[j];
+    return {n.x() * g.a * (ga + gb), n.y() * g.b * (ga - gb)};
   }
   // From x0 = 2 pi u.x, the root of n_z s + h(s) = n_z x0 for the first harmonic h alone, by
   // Lagrange's inversion to third order: s = x0 - r (1 - r1 + r1^2 + r r2 / 2) with r, r1, r2
@@ -494,7 +487,7 @@ struct ProjectedMap {
   // e > 1/2 (the series converges for e below about 0.66) or e < kModelFirstHarmonic (x0 is
   // then close enough).
   math::AngleCosSin reverted_start(const math::AngleCosSin& at, double lo, double hi) const {
-    const auto [p0, q0] = first_harmonic();
+    const auto [p0, q0] = harmonic(0);  // 2 C = a b (n_z s + p_0 sin s + q_0 (1 - cos s) + ...)
     const double nz = n.z();
     const double e2 = p0 * p0 + q0 * q0;
     if (!(e2 <= 0.25 * nz * nz) || e2 < kModelFirstHarmonic * kModelFirstHarmonic * nz * nz)
@@ -693,17 +686,14 @@ struct ProjectedMap {
   // is strong enough for the reverted start to need more than one evaluation.
   void choose_model() {
     const int nt = series.n;
-    const double x = 2.0 * n.x() * g.a, y = 2.0 * n.y() * g.b, ab = g.a * g.b;
+    const double ab = g.a * g.b;
     double bound[kSeriesCapacity + 1];
-    double gj = series.g0;
     for (int j = 0; j <= nt; ++j) {
-      const double gj1 = j < nt ? series.g[j] : 0.0;
-      const auto [p, q] = harmonic(j, gj, gj1, x, y);
-      gj = gj1;
+      const auto [p, q] = harmonic(j);
       bound[j] = ab * (std::abs(p) + 2.0 * std::abs(q)) * kInverseOdd[j];
     }
     series.n_model = 0;
-    const auto [p0, q0] = first_harmonic();
+    const auto [p0, q0] = harmonic(0);
     if (!(p0 * p0 + q0 * q0 >= kModelFirstHarmonic * kModelFirstHarmonic * n.z() * n.z())) return;
     const double limit = kModelTruncation * 2.0 * P;
     double tail = 0.0;
