@@ -127,17 +127,19 @@ struct RadialQuadrant {
   Vec3 local_point(int k, const Angle& ang, double eps2) const {
     const double cs = ang.cs, ss = ang.ss;
     const double px = g->a * cs, py = g->b * ss;
-    // |(px, py)|: plain sqrt unless the squares could underflow (a < ~1e-145).
-    const double r2 = px * px + py * py;
-    const double r = r2 > 1e-290 ? std::sqrt(r2) : std::hypot(px, py);
-    const double omh_r = g->one_minus_hr_parametric(cs, ss);
-    const double omh = eps2 * omh_r;  // 1 - h
+    const double hr = g->hr_parametric(cs, ss);
+    const double inv = 1.0 / (1.0 + hr);
+    const double omh_r = (px * px + py * py) * inv;  // 1 - h_r = r^2 / (1 + h_r), r = |(px, py)|
+    const double omh = eps2 * omh_r;                 // 1 - h
     // h = 1 - eps2 (1 - h_r) as h_r + (1 - eps2)(1 - h_r), two non-negative terms: near the rim
     // (eps2 -> 1) of a disk seen from close to its plane h_r is tiny and 1 - omh would cancel to 0,
     // a direction parallel to the disk that never reaches it.
-    const double h = g->hr_parametric(cs, ss) + (1.0 - eps2) * omh_r;
-    const double rho = std::sqrt(std::max(0.0, omh * (2.0 - omh)));  // sqrt(1 - h^2)
-    return unfold_direction(k, r > 0.0 ? rho * px / r : rho, r > 0.0 ? rho * py / r : 0.0, h);
+    const double h = hr + (1.0 - eps2) * omh_r;
+    // (x, y) = sqrt(1 - h^2) (px, py) / r with sqrt(1 - h^2) = sqrt(omh (2 - omh)) and
+    // omh / r^2 = eps2 / (1 + h_r): (x, y) = f (px, py), one square root, and r never formed (its
+    // square underflows for a < ~1e-154, where f still holds).
+    const double f = std::sqrt(std::max(0.0, eps2 * (2.0 - omh) * inv));
+    return unfold_direction(k, f * px, f * py, h);
   }
 
   // Inverse of local_point within a quadrant: (t', eps2) for a local direction folded into the
@@ -155,10 +157,15 @@ struct RadialQuadrant {
   }
 };
 
+// The sample of a local direction that is unit up to a few roundings (the radial family's): its
+// world direction is renormalized by one Newton step for 1/sqrt, 1/|w| ~ (3 - |w|^2) / 2, whose
+// error (|w|^2 - 1)^2 is far below an ulp when |w|^2 is within 1e-8 of 1 (else unit_vector).
 inline EllipseSample finish_sample(const MapGeometry& g, const Vec3& local, double pdf) {
   EllipseSample out;
   out.local = local;
-  out.direction = unit_vector(g.to_world(local));
+  const Vec3 w = g.to_world(local);
+  const double n2 = w.squaredNorm();
+  out.direction = std::abs(n2 - 1.0) <= 1e-8 ? Vec3(w * (1.5 - 0.5 * n2)) : unit_vector(w);
   out.point = g.hit(out.direction);
   out.pdf = pdf;
   out.valid = true;
