@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 
 #include "disklab/ellipse/map_geometry.h"
 #include "disklab/math/constants.h"
@@ -54,8 +55,9 @@ struct RadialSeries {
   static constexpr int kCapacity = 17;
   // Relative size of the dropped tail: 1e-17, a tenth of the rounding of the sum itself.
   static constexpr double kSeriesDrop = 1e-17;
-  int n = 0;                 // terms of Omega_r's series; 0: not available, use solid_angle.h
-  int n_seed = 0;            // terms of the inverse map's seed, stored after them
+  int n = 0;                   // terms of Omega_r's series; 0: not available, use solid_angle.h
+  std::int16_t n_seed = 0;     // terms of the inverse map's seed, stored after them
+  bool seed_exact = false;     // the seed is the inverse to radial-fast's tolerance (no Newton)
   double a0 = 0.0;           // mean of the integrand (constant term)
   double quadrant = 0.0;     // a_0 pi / 2
   double b[kCapacity] = {};  // b[k - 1] = a_k / (2k), k = 1..n; then the seed's c_1..c_n_seed
@@ -199,23 +201,25 @@ struct RadialSeries {
   // s(t) ~ tau + sum_k c_k sin(2 k tau), tau = t pi / 2: the radial map's parametric angle as a
   // function of the quadrant fraction t (the planar ellipse's answer is s = tau exactly).
   int seed_capacity() const { return kCapacity - n; }
-  // Stores c_1..c_count after Omega_r's terms; false (nothing stored) when they do not fit.
+  // Stores c_1..c_count after Omega_r's terms (not marked exact); false (nothing stored) when
+  // they do not fit.
   bool set_seed(const double* c, int count) {
     if (count < 0 || count > seed_capacity()) return false;
     for (int k = 0; k < count; ++k)
       b[n + k] = c[k];
-    n_seed = count;
+    n_seed = static_cast<std::int16_t>(count);
+    seed_exact = false;
     return true;
   }
   // The seed for t in [0, 1] with its cosine and sine, from one sincos of tau: s = tau + delta
-  // (math::moved_to).
+  // (math::moved_to), clamped to [0, pi/2] (at t = 1 the sines' rounding is not exactly 0).
   ParametricAngle seed(double t) const {
     const double tau = t * math::kHalfPi;
     const ParametricAngle base{tau, std::cos(tau), std::sin(tau)};
     if (n_seed == 0) return base;
     const double delta =
         sine_sum(b + n, n_seed, (base.cs - base.ss) * (base.cs + base.ss), 2.0 * base.ss * base.cs);
-    return math::moved_to(base, tau + delta);
+    return math::moved_to(base, std::clamp(tau + delta, 0.0, math::kHalfPi));
   }
 
  private:
