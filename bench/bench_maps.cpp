@@ -517,7 +517,7 @@ void print_summary(const Results& values) {
   for (const auto& [name, bytes] : state_bytes())
     std::printf("  %-28s %6.0f\n", name.c_str(), bytes);
   std::printf(
-      "Shared tables (built once per process): tabulated/radial-fast %zu bytes, "
+      "Shared tables (built once per process): tabulated %zu bytes, "
       "published-tabulated %zu bytes\n",
       ell::RadialTable::shared().phi.size() * sizeof(double),
       pub::PublishedTable::shared().bytes());

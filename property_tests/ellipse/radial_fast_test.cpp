@@ -59,13 +59,14 @@ TEST(RadialFast, DirectModeMeetsItsTolerance) {
       ASSERT_LE(s.s, math::kHalfPi);
       const double r = std::abs(q.sector_s(s.s) - t * quadrant) / quadrant;
       worst = std::max(worst, r);
-      ASSERT_LE(r, kBetweenChecks) << sc.describe() << " t=" << t << " terms "
-                                   << m.seed_terms() << " + " << m.radial.series.n;
+      ASSERT_LE(r, kBetweenChecks) << sc.describe() << " t=" << t << " terms " << m.seed_terms()
+                                   << " + " << m.radial.series.n;
     }
   }
-  std::printf("  %d scenes, %d direct; worst residual between checks %.3g of the quadrant "
-              "(checks: %.3g)\n",
-              scenes, direct, worst, RadialFastMap::kDirectTol);
+  std::printf(
+      "  %d scenes, %d direct; worst residual between checks %.3g of the quadrant "
+      "(checks: %.3g)\n",
+      scenes, direct, worst, RadialFastMap::kDirectTol);
   // Direct mode is the common case, not a corner: most random scenes take it.
   EXPECT_GT(direct, scenes * 3 / 4);
 }

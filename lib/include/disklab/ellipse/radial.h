@@ -22,6 +22,7 @@
 #include "disklab/ellipse/sampler.h"
 #include "disklab/math/constants.h"
 #include "disklab/math/roots.h"
+#include "disklab/math/rotation.h"
 
 namespace disklab::ellipse {
 
@@ -82,7 +83,7 @@ struct RadialQuadrant {
   Angle solve(double t, int* iterations = nullptr, double s0 = -1.0) const {
     const bool given = s0 >= 0.0 && s0 <= math::kHalfPi;
     const double s = given ? s0 : std::clamp(t, 0.0, 1.0) * math::kHalfPi;
-    const Angle base{s, std::cos(s), std::sin(s)};
+    const Angle base = math::quarter_sincos(s);
     return solve_from(t, given || !use_series() ? base : series->reverted_start(base), iterations);
   }  // The same from a start with its cosine and sine already known (radial-fast's seed).
   Angle solve_from(double t, Angle start, int* iterations = nullptr) const {

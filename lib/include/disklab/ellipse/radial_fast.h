@@ -173,8 +173,8 @@ struct RadialFastMap {
       return;
     }
     // A seed longer than the free capacity is cut there (still a better start than tau).
-    series.set_seed(c, finite(nodes) ? std::min(terms_for(nodes, target), series.seed_capacity())
-                                     : 0);
+    series.set_seed(c,
+                    finite(nodes) ? std::min(terms_for(nodes, target), series.seed_capacity()) : 0);
   }
 };
 

@@ -55,9 +55,9 @@ struct RadialSeries {
   static constexpr int kCapacity = 17;
   // Relative size of the dropped tail: 1e-17, a tenth of the rounding of the sum itself.
   static constexpr double kSeriesDrop = 1e-17;
-  int n = 0;                   // terms of Omega_r's series; 0: not available, use solid_angle.h
-  std::int16_t n_seed = 0;     // terms of the inverse map's seed, stored after them
-  bool seed_exact = false;     // the seed is the inverse to radial-fast's tolerance (no Newton)
+  int n = 0;                 // terms of Omega_r's series; 0: not available, use solid_angle.h
+  std::int16_t n_seed = 0;   // terms of the inverse map's seed, stored after them
+  bool seed_exact = false;   // the seed is the inverse to radial-fast's tolerance (no Newton)
   double a0 = 0.0;           // mean of the integrand (constant term)
   double quadrant = 0.0;     // a_0 pi / 2
   double b[kCapacity] = {};  // b[k - 1] = a_k / (2k), k = 1..n; then the seed's c_1..c_n_seed
@@ -211,11 +211,12 @@ struct RadialSeries {
     seed_exact = false;
     return true;
   }
-  // The seed for t in [0, 1] with its cosine and sine, from one sincos of tau: s = tau + delta
-  // (math::moved_to), clamped to [0, pi/2] (at t = 1 the sines' rounding is not exactly 0).
+  // The seed for t in [0, 1] with its cosine and sine, from those of tau (math::quarter_sincos):
+  // s = tau + delta (math::moved_to), clamped to [0, pi/2] (at t = 1 the sines' rounding is not
+  // exactly 0).
   ParametricAngle seed(double t) const {
-    const double tau = t * math::kHalfPi;
-    const ParametricAngle base{tau, std::cos(tau), std::sin(tau)};
+    const double tau = std::clamp(t, 0.0, 1.0) * math::kHalfPi;
+    const ParametricAngle base = math::quarter_sincos(tau);
     if (n_seed == 0) return base;
     const double delta =
         sine_sum(b + n, n_seed, (base.cs - base.ss) * (base.cs + base.ss), 2.0 * base.ss * base.cs);

@@ -51,4 +51,30 @@ inline constexpr double kSmallRotation = 0.125;
   return {x, at.cs - (at.ss * sin_d + at.cs * vers_d), at.ss + (at.cs * sin_d - at.ss * vers_d)};
 }
 
+// The angle x in [0, pi/2] with its cosine and sine, without a library call (the radial maps'
+// per-sample tau = t pi/2): on [0, pi/4] the Taylor series of sin through y^17 and of cos
+// through y^16 (remainders below 1e-19 and 3e-18 relative at pi/4), above it the same at
+// y = pi/2 - x (exact by Sterbenz's lemma, plus pi/2's rounding 6.1e-17). The small parts
+// y^3 P(y^2) <= 0.11 y and y^2/2 <= 0.31 round to a fraction of an ulp of the sums: about one
+// ulp in all. Inputs outside [0, pi/2] (and NaN) are the caller's to avoid.
+[[gnu::always_inline]] inline AngleCosSin quarter_sincos(double x) {
+  constexpr double kHalfPiHi = 0x1.921fb54442d18p0, kHalfPiLo = 0x1.1a62633145c07p-54;
+  const bool upper = x > 0.5 * kHalfPiHi;
+  const double y = upper ? (kHalfPiHi - x) + kHalfPiLo : x;
+  const double z = y * y, z2 = z * z, z4 = z2 * z2;
+  // sin y = y + y^3 P(z): P = sum_{k=0..7} (-1)^(k+1) z^k / (2k+3)!; cos y = 1 - z/2 + z^2 Q(z):
+  // Q = sum_{k=0..6} (-1)^k z^k / (2k+4)!. Estrin's scheme: short dependency chains.
+  const double p =
+      (std::fma(1.0 / 120, z, -1.0 / 6) + z2 * std::fma(1.0 / 362880, z, -1.0 / 5040)) +
+      z4 * (std::fma(1.0 / 6227020800.0, z, -1.0 / 39916800) +
+            z2 * std::fma(1.0 / 121645100408832000.0, z, -1.0 / 1307674368000.0));
+  const double q =
+      (std::fma(-1.0 / 720, z, 1.0 / 24) + z2 * std::fma(-1.0 / 3628800, z, 1.0 / 40320)) +
+      z4 * (std::fma(-1.0 / 87178291200.0, z, 1.0 / 479001600) +
+            z2 * std::fma(-1.0 / 6402373705728000.0, z, 1.0 / 20922789888000.0));
+  const double sin_y = std::fma(y * z, p, y);
+  const double cos_y = std::fma(z2, q, std::fma(-0.5, z, 1.0));
+  return upper ? AngleCosSin{x, sin_y, cos_y} : AngleCosSin{x, cos_y, sin_y};
+}
+
 }  // namespace disklab::math
