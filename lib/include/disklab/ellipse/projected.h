@@ -618,7 +618,7 @@ struct ProjectedMap {
     const Vec3 local(st * md.cos_phi, st * md.sin_phi, ct);
     EllipseSample out;
     out.local = local;
-    out.direction = g.to_world(local).normalized();
+    out.direction = renormalized(g.to_world(local));
     // As pdf(direction) computes it, so the two agree exactly.
     const double cosine = g.to_local(out.direction).dot(n);
     if (!(cosine > 0.0)) return {};  // on the horizon itself (measure zero)

@@ -158,15 +158,11 @@ struct RadialQuadrant {
   }
 };
 
-// The sample of a local direction that is unit up to a few roundings (the radial family's): its
-// world direction is renormalized by one Newton step for 1/sqrt, 1/|w| ~ (3 - |w|^2) / 2, whose
-// error (|w|^2 - 1)^2 is far below an ulp when |w|^2 is within 1e-8 of 1 (else unit_vector).
+// The sample of a local direction that is unit up to a few roundings (the radial family's).
 inline EllipseSample finish_sample(const MapGeometry& g, const Vec3& local, double pdf) {
   EllipseSample out;
   out.local = local;
-  const Vec3 w = g.to_world(local);
-  const double n2 = w.squaredNorm();
-  out.direction = std::abs(n2 - 1.0) <= 1e-8 ? Vec3(w * (1.5 - 0.5 * n2)) : unit_vector(w);
+  out.direction = renormalized(g.to_world(local));
   out.point = g.hit(out.direction);
   out.pdf = pdf;
   out.valid = true;
