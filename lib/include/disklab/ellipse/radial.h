@@ -125,7 +125,7 @@ struct RadialQuadrant {
   Vec3 local_point(int k, double s, double eps2) const {
     return local_point(k, Angle{s, std::cos(s), std::sin(s)}, eps2);
   }
-  Vec3 local_point(int k, const Angle& ang, double eps2) const {
+  [[gnu::always_inline]] Vec3 local_point(int k, const Angle& ang, double eps2) const {
     const double cs = ang.cs, ss = ang.ss;
     const double px = g->a * cs, py = g->b * ss;
     const double hr = g->hr_parametric(cs, ss);
@@ -159,7 +159,7 @@ struct RadialQuadrant {
 };
 
 // The sample of a local direction that is unit up to a few roundings (the radial family's).
-inline EllipseSample finish_sample(const MapGeometry& g, const Vec3& local, double pdf) {
+[[gnu::always_inline]] inline EllipseSample finish_sample(const MapGeometry& g, const Vec3& local, double pdf) {
   EllipseSample out;
   out.local = local;
   out.direction = renormalized(g.to_world(local));

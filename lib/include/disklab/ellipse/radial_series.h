@@ -214,7 +214,7 @@ struct RadialSeries {
   // The seed for t in [0, 1] with its cosine and sine, from those of tau (math::quarter_sincos):
   // s = tau + delta (math::moved_to), clamped to [0, pi/2] (at t = 1 the sines' rounding is not
   // exactly 0).
-  ParametricAngle seed(double t) const {
+  [[gnu::always_inline]] ParametricAngle seed(double t) const {
     const double tau = std::clamp(t, 0.0, 1.0) * math::kHalfPi;
     const ParametricAngle base = math::quarter_sincos(tau);
     if (n_seed == 0) return base;

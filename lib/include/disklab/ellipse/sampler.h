@@ -47,7 +47,7 @@ inline Vec3 unit_vector(const Vec3& v) {
 // v / |v| for a v that is unit up to a few roundings (a unit local direction rotated to the world):
 // one Newton step for 1/sqrt, 1/|v| ~ (3 - |v|^2) / 2, whose error (|v|^2 - 1)^2 is far below an
 // ulp when |v|^2 is within 1e-8 of 1; unit_vector otherwise.
-inline Vec3 renormalized(const Vec3& v) {
+[[gnu::always_inline]] inline Vec3 renormalized(const Vec3& v) {
   const double n2 = v.squaredNorm();
   return std::abs(n2 - 1.0) <= 1e-8 ? Vec3(v * (1.5 - 0.5 * n2)) : unit_vector(v);
 }

@@ -56,7 +56,8 @@ inline constexpr double kSmallRotation = 0.125;
 // through y^16 (remainders below 1e-19 and 3e-18 relative at pi/4), above it the same at
 // y = pi/2 - x (exact by Sterbenz's lemma, plus pi/2's rounding 6.1e-17). The small parts
 // y^3 P(y^2) <= 0.11 y and y^2/2 <= 0.31 round to a fraction of an ulp of the sums: about one
-// ulp in all. Inputs outside [0, pi/2] (and NaN) are the caller's to avoid.
+// ulp in all. Plain products and sums, no std::fma: without FMA hardware in the build's target
+// each would be a library call. Inputs outside [0, pi/2] (and NaN) are the caller's to avoid.
 [[gnu::always_inline]] inline AngleCosSin quarter_sincos(double x) {
   constexpr double kHalfPiHi = 0x1.921fb54442d18p0, kHalfPiLo = 0x1.1a62633145c07p-54;
   const bool upper = x > 0.5 * kHalfPiHi;
@@ -64,16 +65,15 @@ inline constexpr double kSmallRotation = 0.125;
   const double z = y * y, z2 = z * z, z4 = z2 * z2;
   // sin y = y + y^3 P(z): P = sum_{k=0..7} (-1)^(k+1) z^k / (2k+3)!; cos y = 1 - z/2 + z^2 Q(z):
   // Q = sum_{k=0..6} (-1)^k z^k / (2k+4)!. Estrin's scheme: short dependency chains.
-  const double p =
-      (std::fma(1.0 / 120, z, -1.0 / 6) + z2 * std::fma(1.0 / 362880, z, -1.0 / 5040)) +
-      z4 * (std::fma(1.0 / 6227020800.0, z, -1.0 / 39916800) +
-            z2 * std::fma(1.0 / 121645100408832000.0, z, -1.0 / 1307674368000.0));
-  const double q =
-      (std::fma(-1.0 / 720, z, 1.0 / 24) + z2 * std::fma(-1.0 / 3628800, z, 1.0 / 40320)) +
-      z4 * (std::fma(-1.0 / 87178291200.0, z, 1.0 / 479001600) +
-            z2 * std::fma(-1.0 / 6402373705728000.0, z, 1.0 / 20922789888000.0));
-  const double sin_y = std::fma(y * z, p, y);
-  const double cos_y = std::fma(z2, q, std::fma(-0.5, z, 1.0));
+  constexpr double p0 = -1.0 / 6, p1 = 1.0 / 120, p2 = -1.0 / 5040, p3 = 1.0 / 362880,
+                   p4 = -1.0 / 39916800, p5 = 1.0 / 6227020800.0, p6 = -1.0 / 1307674368000.0,
+                   p7 = 1.0 / 355687428096000.0;
+  constexpr double q0 = 1.0 / 24, q1 = -1.0 / 720, q2 = 1.0 / 40320, q3 = -1.0 / 3628800,
+                   q4 = 1.0 / 479001600, q5 = -1.0 / 87178291200.0, q6 = 1.0 / 20922789888000.0;
+  const double p = ((p0 + p1 * z) + z2 * (p2 + p3 * z)) + z4 * ((p4 + p5 * z) + z2 * (p6 + p7 * z));
+  const double q = ((q0 + q1 * z) + z2 * (q2 + q3 * z)) + z4 * ((q4 + q5 * z) + z2 * q6);
+  const double sin_y = y + (y * z) * p;
+  const double cos_y = (1.0 - 0.5 * z) + z2 * q;
   return upper ? AngleCosSin{x, sin_y, cos_y} : AngleCosSin{x, cos_y, sin_y};
 }
 
