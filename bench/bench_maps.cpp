@@ -35,6 +35,7 @@
 // Run: build/<preset>/bin/bench_maps --benchmark_repetitions=5
 // --benchmark_report_aggregates_only=true --benchmark_min_time=0.1 (about 25 minutes; add
 // --benchmark_filter='/(radial|published-radial-double)/' for a part).
+#include <alloca.h>
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -271,6 +272,87 @@ inline double seconds(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double>(b - a).count();
 }
 
+// ---- stack positions ----
+// Each timed batch runs at one of kStackOffsets stack positions, kStackStride bytes apart (more
+// than 4 KiB in all). A core that compares only the low 12 bits of addresses to decide whether a
+// load waits for an earlier store ("4K aliasing") slows a map by up to 40% when one of its stack
+// stores (spills, the returned sample) shares those bits with a constant or an input it loads on
+// every sample; which pairs do depends on where the caller's stack happens to be. At a single
+// position a map's ratio moved by that much between builds, and with the size of the
+// environment; over the positions it is the expected cost over a renderer's call sites. Times
+// are the median per position (robust to preempted batches), averaged over positions.
+constexpr int kStackOffsets = 16;
+constexpr std::size_t kStackStride = 272;  // 16-byte aligned; 16 * 272 = 4352 bytes
+
+// f() with the stack moved down by k * kStackStride bytes: f must call out of line (the frames
+// of what it calls lie below the pad, its own inlined locals do not).
+template <class F>
+[[gnu::noinline]] int at_stack_offset(int k, F&& f) {
+  auto* pad = static_cast<volatile char*>(alloca(16 + static_cast<std::size_t>(k) * kStackStride));
+  pad[0] = 0;
+  return f();
+}
+
+// A map's draw, out of line so that at_stack_offset moves its frame, on a copy of the map in that
+// frame (the map's position counts as much as its spills'), summing into a local (a sink in the
+// caller's frame, stored on every sample because it may alias the inputs, made a slow mode of
+// its own).
+template <class A, class M>
+[[gnu::noinline]] int draw_out_of_line(const M& m, const Point2* u, int n, double& sink) {
+  const M here = m;
+  double here_sink = 0.0;
+  const int drawn = A::draw(here, u, n, here_sink);
+  sink += here_sink;
+  return drawn;
+}
+template <Point2 (*F)(Point2)>
+[[gnu::noinline]] int draw_disk_out_of_line(const Point2* u, int n, double& sink) {
+  return draw_disk<F>(u, n, sink);
+}
+
+// `count` makes per shading point p[i] (the set-up benchmark), out of line.
+template <class A>
+[[gnu::noinline]] int make_out_of_line(const Config& c, const Point2* p, int count,
+                                       const ell::LeanDiskLight& light) {
+  for (int i = 0; i < count; ++i) {
+    const auto m = A::make(nudged(c, p[i]), light);
+    benchmark::DoNotOptimize(m);
+  }
+  return count;
+}
+// `reps` shading points of one make and k samples each, from u[offset] on; samples drawn.
+template <class A>
+[[gnu::noinline]] int make_and_draw_out_of_line(const Config& c, const ell::LeanDiskLight& light,
+                                                const std::vector<Point2>& u, int offset, int reps,
+                                                int k, double& sink) {
+  int drawn = 0;
+  double here_sink = 0.0;
+  for (int r = 0; r < reps; ++r) {
+    const auto m = A::make(nudged(c, u[offset]), light);
+    drawn += A::draw(m, u.data() + offset, k, here_sink);
+    offset = (offset + k) % kPoints;
+  }
+  sink += here_sink;
+  return drawn;
+}
+
+// Per-batch times, kept per stack position.
+struct PositionTimes {
+  std::array<std::vector<double>, kStackOffsets> t;
+  void add(int k, double seconds) { t[static_cast<std::size_t>(k)].push_back(seconds); }
+  // Mean over the positions of the median batch time at each (positions never run are skipped).
+  double typical() {
+    double sum = 0.0;
+    int n = 0;
+    for (auto& v : t) {
+      if (v.empty()) continue;
+      sum += median(v);
+      ++n;
+    }
+    return n > 0 ? sum / n : 0.0;
+  }
+};
+
 // ---- per-sample cost, interleaved with the baselines ----
 template <class A>
 void BM_Sample(benchmark::State& state, const Config& c) {
@@ -283,38 +365,42 @@ void BM_Sample(benchmark::State& state, const Config& c) {
   }
   const std::vector<Point2>& u = points();
   double sink = 0.0;
-  std::vector<double> t_map, t_lean, t_conc, t_polar;  // per batch
+  PositionTimes t_map, t_lean, t_conc, t_polar;  // per batch
   long n_map = 0;
   int per_batch = kBatch;
-  int offset = 0;
+  int offset = 0, position = 0;
   for (auto _ : state) {
     const Point2* batch = u.data() + offset;
     offset = (offset + kBatch) % kPoints;
+    const int k = position;
+    position = (position + 1) % kStackOffsets;
     const auto t0 = Clock::now();
-    per_batch = A::draw(m, batch, kBatch, sink);
+    per_batch = at_stack_offset(k, [&] { return draw_out_of_line<A>(m, batch, kBatch, sink); });
     const auto t1 = Clock::now();
-    LeanA::draw(lean, batch, kBatch, sink);
+    at_stack_offset(k, [&] { return draw_out_of_line<LeanA>(lean, batch, kBatch, sink); });
     const auto t2 = Clock::now();
-    draw_disk<disk::sample_concentric>(batch, kBatch, sink);
+    at_stack_offset(
+        k, [&] { return draw_disk_out_of_line<disk::sample_concentric>(batch, kBatch, sink); });
     const auto t3 = Clock::now();
-    draw_disk<disk::sample_polar>(batch, kBatch, sink);
+    at_stack_offset(k,
+                    [&] { return draw_disk_out_of_line<disk::sample_polar>(batch, kBatch, sink); });
     const auto t4 = Clock::now();
     n_map += per_batch;
-    t_map.push_back(seconds(t0, t1));
-    t_lean.push_back(seconds(t1, t2));
-    t_conc.push_back(seconds(t2, t3));
-    t_polar.push_back(seconds(t3, t4));
+    t_map.add(k, seconds(t0, t1));
+    t_lean.add(k, seconds(t1, t2));
+    t_conc.add(k, seconds(t2, t3));
+    t_polar.add(k, seconds(t3, t4));
     state.SetIterationTime(seconds(t0, t1));
     benchmark::DoNotOptimize(sink);
   }
   state.SetItemsProcessed(n_map);
-  const double per_map = median(t_map) / per_batch;
-  const double per_lean = median(t_lean) / kBatch;
+  const double per_map = t_map.typical() / per_batch;
+  const double per_lean = t_lean.typical() / kBatch;
   state.counters["ns"] = per_map * 1e9;
   state.counters["lean_ns"] = per_lean * 1e9;
   state.counters["ratio_to_lean"] = per_map / per_lean;
-  state.counters["ratio_to_concentric"] = per_map / (median(t_conc) / kBatch);
-  state.counters["ratio_to_polar"] = per_map / (median(t_polar) / kBatch);
+  state.counters["ratio_to_concentric"] = per_map / (t_conc.typical() / kBatch);
+  state.counters["ratio_to_polar"] = per_map / (t_polar.typical() / kBatch);
   state.counters["bytes"] = sizeof(m);
   const double evals = mean_evaluations(m);
   if (evals > 0.0) state.counters["evals"] = evals;
@@ -343,31 +429,27 @@ template <class A>
 void BM_Setup(benchmark::State& state, const Config& c) {
   constexpr int kMakes = 32;
   const ell::LeanDiskLight& light = lean_light(c);
-  std::vector<double> t_map, t_lean;
+  PositionTimes t_map, t_lean;
   long count = 0;
   const std::vector<Point2>& u = points();
-  int offset = 0;
+  int offset = 0, position = 0;
   for (auto _ : state) {
     const Point2* p = u.data() + offset;
     offset = (offset + kMakes) % kPoints;
+    const int k = position;
+    position = (position + 1) % kStackOffsets;
     const auto t0 = Clock::now();
-    for (int i = 0; i < kMakes; ++i) {
-      const auto m = A::make(nudged(c, p[i]), light);
-      benchmark::DoNotOptimize(m);
-    }
+    at_stack_offset(k, [&] { return make_out_of_line<A>(c, p, kMakes, light); });
     const auto t1 = Clock::now();
-    for (int i = 0; i < kMakes; ++i) {
-      const auto m = LeanA::make(nudged(c, p[i]), light);
-      benchmark::DoNotOptimize(m);
-    }
+    at_stack_offset(k, [&] { return make_out_of_line<LeanA>(c, p, kMakes, light); });
     const auto t2 = Clock::now();
     count += kMakes;
-    t_map.push_back(seconds(t0, t1));
-    t_lean.push_back(seconds(t1, t2));
+    t_map.add(k, seconds(t0, t1));
+    t_lean.add(k, seconds(t1, t2));
     state.SetIterationTime(seconds(t0, t1));
   }
   state.SetItemsProcessed(count);
-  const double m_map = median(t_map), m_lean = median(t_lean);
+  const double m_map = t_map.typical(), m_lean = t_lean.typical();
   state.counters["ns"] = m_map / kMakes * 1e9;
   state.counters["lean_ns"] = m_lean / kMakes * 1e9;
   state.counters["ratio_to_lean"] = m_map / m_lean;
@@ -379,39 +461,32 @@ void BM_Amortized(benchmark::State& state, const Config& c, int k) {
   const int reps = std::max(1, 256 / k);  // shading points per timed batch
   const ell::LeanDiskLight& light = lean_light(c);
   double sink = 0.0;
-  std::vector<double> t_map, t_lean;
+  PositionTimes t_map, t_lean;
   long samples = 0;
   int per_batch = reps * k;
   const std::vector<Point2>& u = points();
-  int offset = 0;
+  int offset = 0, position = 0;
   for (auto _ : state) {
+    const int at = position;
+    position = (position + 1) % kStackOffsets;
     const auto t0 = Clock::now();
-    int off = offset;
-    per_batch = 0;
-    for (int r = 0; r < reps; ++r) {
-      const auto m = A::make(nudged(c, u[off]), light);
-      per_batch += A::draw(m, u.data() + off, k, sink);
-      off = (off + k) % kPoints;
-    }
+    per_batch = at_stack_offset(
+        at, [&] { return make_and_draw_out_of_line<A>(c, light, u, offset, reps, k, sink); });
     const auto t1 = Clock::now();
-    off = offset;
-    for (int r = 0; r < reps; ++r) {
-      const auto m = LeanA::make(nudged(c, u[off]), light);
-      LeanA::draw(m, u.data() + off, k, sink);
-      off = (off + k) % kPoints;
-    }
+    at_stack_offset(
+        at, [&] { return make_and_draw_out_of_line<LeanA>(c, light, u, offset, reps, k, sink); });
     const auto t2 = Clock::now();
-    offset = off;
+    offset = (offset + reps * k) % kPoints;
     samples += per_batch;
-    t_map.push_back(seconds(t0, t1));
-    t_lean.push_back(seconds(t1, t2));
+    t_map.add(at, seconds(t0, t1));
+    t_lean.add(at, seconds(t1, t2));
     state.SetIterationTime(seconds(t0, t1));
     benchmark::DoNotOptimize(sink);
   }
   state.SetItemsProcessed(samples);
   // radial4 draws k/4 solves of four (it is not registered for k < 4): count what was drawn.
-  const double per_map = median(t_map) / std::max(1, per_batch);
-  const double per_lean = median(t_lean) / (reps * k);
+  const double per_map = t_map.typical() / std::max(1, per_batch);
+  const double per_lean = t_lean.typical() / (reps * k);
   state.counters["ns"] = per_map * 1e9;
   state.counters["ratio_to_lean"] = per_map / per_lean;
 }
