@@ -159,7 +159,8 @@ struct RadialQuadrant {
 };
 
 // The sample of a local direction that is unit up to a few roundings (the radial family's).
-[[gnu::always_inline]] inline EllipseSample finish_sample(const MapGeometry& g, const Vec3& local, double pdf) {
+[[gnu::always_inline]] inline EllipseSample finish_sample(const MapGeometry& g, const Vec3& local,
+                                                          double pdf) {
   EllipseSample out;
   out.local = local;
   out.direction = renormalized(g.to_world(local));
