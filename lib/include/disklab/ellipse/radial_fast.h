@@ -149,8 +149,8 @@ struct RadialFastMap {
         if (!std::isfinite(c[k])) return false;
       return true;
     };
-    // Direct mode when the series fits and its residual checks pass (the checks, not the tail,
-    // decide: the tail only estimates what the transform aliases).
+    // Direct mode when the series fits and its residual checks pass (the checks decide, since
+    // what the transform aliases is not known from its coefficients alone).
     auto try_direct = [&](int nodes) {
       return finite(nodes) && series.set_seed(c, terms_for(nodes, direct_target)) &&
              residual_checked(nodes) <= kDirectTol * quadrant;
