@@ -206,7 +206,11 @@ RC_GTEST_PROP(AnyMap, DispatchAgreesWithStructs, ()) {
   RC_ASSERT(same(one, direct_one));
   if (!one.valid) return;
   const auto inv = m.invert(one.direction);
-  const auto dinv = direct_invert(m.kind(), c, one.direction.normalized());
+  // Each struct's invert takes a unit direction, but projected's normalizes its argument itself
+  // as AnyMap's does: give it the raw direction, since normalizing is not idempotent to the ulp.
+  const auto dinv = direct_invert(m.kind(), c,
+                                  m.kind() == MapKind::projected ? one.direction
+                                                                 : one.direction.normalized());
   RC_ASSERT(inv.has_value() == m.has_inverse());
   if (inv) RC_ASSERT(*inv == *dinv);
 }
