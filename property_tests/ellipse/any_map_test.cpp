@@ -208,9 +208,8 @@ RC_GTEST_PROP(AnyMap, DispatchAgreesWithStructs, ()) {
   const auto inv = m.invert(one.direction);
   // Each struct's invert takes a unit direction, but projected's normalizes its argument itself
   // as AnyMap's does: give it the raw direction, since normalizing is not idempotent to the ulp.
-  const auto dinv = direct_invert(m.kind(), c,
-                                  m.kind() == MapKind::projected ? one.direction
-                                                                 : one.direction.normalized());
+  const auto dinv = direct_invert(
+      m.kind(), c, m.kind() == MapKind::projected ? one.direction : one.direction.normalized());
   RC_ASSERT(inv.has_value() == m.has_inverse());
   if (inv) RC_ASSERT(*inv == *dinv);
 }

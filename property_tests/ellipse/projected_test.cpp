@@ -476,4 +476,46 @@ TEST(Projected, DegenerateAndBelowTheHorizonGiveNoSample) {
   EXPECT_FALSE(ellipse::ProjectedMap::make(above, Vec3::Zero(), -Vec3::UnitZ()).valid());
 }
 
+// G(r^2) = S(asin r) / r^3, the series the set-up fits (projected_detail::G, g_series): against
+// the same Maclaurin series summed in long double by its term recurrence to 2^-100 (no table,
+// no Horner), on [0, 1/4) where the double code sums the series, and with the degree the set-up
+// takes for a whole ellipse (g_series_degree of its largest r^2) at every smaller r^2. 2 ulps:
+// Horner's rounding in double is about one ulp (the sum's terms are all positive and fall by
+// r^2 <= 1/4), and the dropped tail is below 2^-58 relative.
+TEST(Projected, MaclaurinSeriesOfGIsAccurate) {
+  auto reference = [](long double r2) {
+    long double c = 1.0L, p = 1.0L, sum = 1.0L / 3.0L;
+    for (int k = 1; k < 400; ++k) {
+      c *= (2.0L * k - 1.0L) / (2.0L * k);
+      p *= r2;
+      const long double term = c * p / (2.0L * k + 3.0L);
+      sum += term;
+      if (term < 0x1p-100L * sum) break;
+    }
+    return sum;
+  };
+  auto ulps = [](double got, long double ref) {
+    return static_cast<double>(std::abs(got - ref) /
+                               std::ldexp(1.0L, std::ilogb(static_cast<double>(ref)) - 52));
+  };
+  namespace pd = ellipse::projected_detail;
+  double worst = 0.0;
+  for (int i = 0; i < 2000; ++i) {
+    const double r2 = 0.25 * i / 2000.0;
+    worst = std::max(worst, ulps(pd::G(r2), reference(r2)));
+    for (const double max_r2 : {r2, std::min(0.2499, 1.5 * r2 + 1e-3), 0.2499}) {
+      const double got = pd::g_series(r2, pd::g_series_degree(max_r2));
+      EXPECT_LE(ulps(got, reference(r2)), 2.0) << "r2 = " << r2 << ", max_r2 = " << max_r2;
+    }
+  }
+  EXPECT_LE(worst, 2.0);
+  // The degree grows with the range and stays within the table.
+  EXPECT_EQ(pd::g_series_degree(0.0), 0);
+  EXPECT_LT(pd::g_series_degree(1e-4), pd::g_series_degree(0.01));
+  EXPECT_LT(pd::g_series_degree(0.01), pd::g_series_degree(0.2499));
+  EXPECT_LT(pd::g_series_degree(0.2499), pd::kGSeriesTerms - 1);
+  std::printf("G's series on [0, 1/4): worst %.2f ulp; degree %d at r^2 = 0.01, %d at 0.25\n",
+              worst, pd::g_series_degree(0.01), pd::g_series_degree(0.2499));
+}
+
 }  // namespace

@@ -58,7 +58,7 @@ TEST(Rotation, EveryTierAccurateUpToItsBoundAndJustBeyond) {
 
 RC_GTEST_PROP(Rotation, MovedAngleMatchesTheLibrary, ()) {
   const double a = (*rc::gen::inRange(-1000000, 1000000) / 1000000.0) * 3.2;
-  // Steps across every tier and past kSmallRotation (where the library is called).
+  // Steps across every tier and past kSmallRotation (where no rotation is used).
   const double d = std::pow(10.0, -*rc::gen::inRange(0, 14000) / 1000.0) * 0.3 *
                    (*rc::gen::arbitrary<bool>() ? 1.0 : -1.0);
   const AngleCosSin at{a, std::cos(a), std::sin(a)};
@@ -67,6 +67,8 @@ RC_GTEST_PROP(Rotation, MovedAngleMatchesTheLibrary, ()) {
   RC_ASSERT(moved.s == x);
   // Each of at's values is within an ulp of the truth, the rotation adds about an ulp of |d|
   // and the final sum half an ulp, and std::sin(x) is within an ulp: 4 eps of their scale.
+  // Steps past kSmallRotation to an x in [0, 7] take turn_sincos (2 ulps, TurnSincos below),
+  // others the library: with std::sin's ulp, within 4 eps |sin x| <= 4 eps (|at.ss| + dd).
   const double dd = std::abs(x - a);
   RC_ASSERT(std::abs(moved.ss - std::sin(x)) <= 4 * kEps * (std::abs(at.ss) + dd));
   RC_ASSERT(std::abs(moved.cs - std::cos(x)) <= 4 * kEps * (std::abs(at.cs) + dd));
@@ -113,5 +115,46 @@ TEST(Rotation, QuarterSincosAccurateOnTheFirstQuadrant) {
     check(half_pi * rng.next_double());
   EXPECT_EQ(disklab::math::quarter_sincos(0.0).ss, 0.0);
   EXPECT_EQ(disklab::math::quarter_sincos(0.0).cs, 1.0);
+  std::printf("  worst %.3f ulp\n", worst);
+}
+
+// turn_sincos against long double on [0, 2 pi], the quadrants' ends included (where the reduced
+// angle is tiny, or pi/2 minus tiny, and the small one of the two values must stay accurate
+// relative to itself): quarter_sincos's 2 ulps, since the reduction's one rounding is half an
+// ulp of the reduced angle, i.e. of the small value.
+TEST(Rotation, TurnSincosAccurateOnTheWholeTurn) {
+  auto ulps = [](double got, long double ref) {
+    const long double ulp = std::ldexp(1.0L, std::ilogb(static_cast<double>(ref)) - 52);
+    return static_cast<double>(std::abs(got - ref) / ulp);
+  };
+  double worst = 0.0;
+  auto check = [&](double x) {
+    const AngleCosSin a = disklab::math::turn_sincos(x);
+    EXPECT_EQ(a.s, x);
+    const long double rs = std::sin(static_cast<long double>(x)),
+                      rc = std::cos(static_cast<long double>(x));
+    worst = std::max({worst, x > 0.0 ? ulps(a.ss, rs) : 0.0, ulps(a.cs, rc)});
+    if (x > 0.0) {
+      EXPECT_LE(ulps(a.ss, rs), 2.0) << "x = " << x;
+    }
+    EXPECT_LE(ulps(a.cs, rc), 2.0) << "x = " << x;
+  };
+  const double half_pi = std::numbers::pi / 2;
+  check(0.0);
+  EXPECT_EQ(disklab::math::turn_sincos(0.0).ss, 0.0);
+  for (int q = 1; q <= 4; ++q) {
+    double x = q * half_pi;
+    for (int k = 0; k < 8; ++k) {
+      check(x);
+      check(std::nextafter(q * half_pi, 0.0) - k * 1e-16 * q);
+      x = std::nextafter(x, 10.0);
+    }
+  }
+  check(2 * std::numbers::pi);
+  for (int i = 0; i <= 200000; ++i)
+    check(4 * half_pi * i / 200000.0);
+  disklab::sequence::Pcg32 rng(7);
+  for (int i = 0; i < 100000; ++i)
+    check(4 * half_pi * rng.next_double());
   std::printf("  worst %.3f ulp\n", worst);
 }

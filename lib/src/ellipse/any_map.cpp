@@ -118,6 +118,16 @@ AnyMap AnyMap::make(MapKind kind, const Disk& disk, const Vec3& o) noexcept {
   return AnyMap(AreaSampler{});  // not reached: every kind is listed
 }
 
+double AnyMap::omega() const {
+  if (!valid()) return 0.0;
+  if (const auto* p = std::get_if<ProjectedMap>(&map_)) {
+    MapGeometry g = p->g;  // its shape only (ProjectedMap::make)
+    g.finish_totals(0.0);
+    return g.omega;
+  }
+  return geometry().omega;
+}
+
 const MapGeometry& AnyMap::geometry() const {
   return std::visit(Overloaded{
                         [](const LdRadialMap& m) -> const MapGeometry& { return m.radial.g; },

@@ -101,7 +101,9 @@ class AnyMap {
   // non-finite input): every sample is then "no sample".
   bool valid() const { return !geometry().empty; }
   // Solid angle of the disk seen from the point (0 when !valid()).
-  double omega() const { return valid() ? geometry().omega : 0.0; }
+  double omega() const;
+  // The map's geometry. projected's needs no solid angle: its omega and quadrant are 0 (omega()
+  // computes the solid angle on demand).
   const MapGeometry& geometry() const;
 
   // One sample of the whole ellipse (for radial4: the radial map; a single candidate for gamito

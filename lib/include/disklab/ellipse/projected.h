@@ -28,7 +28,9 @@
 // whose every term is as small as P, so that no O(a) terms cancel down to P ~ a^3 for a small
 // straddling ellipse; and n_z, O(a) there, is compensated from the exact inputs (make).
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <tuple>
 #include <utility>
@@ -76,20 +78,42 @@ inline double S(double t) {
   return 0.25 * (2.0 * t - std::sin(2.0 * t));
 }
 
-// G(r) = S(asin r) / r^3 as a function of r^2 < 1: sum_k C(2k, k) 4^-k r^2k / (2k + 3) below
-// r^2 = 1/4 (S'(r) = r^2 / sqrt(1 - r^2)), the closed form above.
-inline double G(double r2) {
-  if (r2 < 0.25) {
-    double c = 1.0, p = 1.0, sum = 1.0 / 3.0;
-    for (int k = 1; k < 40; ++k) {
-      c *= (2.0 * k - 1.0) / (2.0 * k);
-      p *= r2;
-      const double term = c * p / (2.0 * k + 3.0);
-      sum += term;
-      if (term < 1e-18 * sum) break;
-    }
-    return sum;
+// G(r) = S(asin r) / r^3 as a function of r^2 < 1 (S'(r) = r^2 / sqrt(1 - r^2)): below r^2 = 1/4
+// by its Maclaurin series sum_k c_k r^2k, c_k = C(2k, k) 4^-k / (2k + 3), above by the closed
+// form, whose difference loses about 1.5 eps / r^2 relative.
+inline constexpr int kGSeriesTerms = 40;
+inline constexpr std::array<double, kGSeriesTerms> kGSeries = [] {
+  std::array<double, kGSeriesTerms> c{};
+  double binomial = 1.0;  // C(2k, k) 4^-k
+  for (int k = 0; k < kGSeriesTerms; ++k) {
+    c[static_cast<std::size_t>(k)] = binomial / (2.0 * k + 3.0);
+    binomial *= (2.0 * k + 1.0) / (2.0 * k + 2.0);
   }
+  return c;
+}();
+// The degree of the series for every r^2 <= max_r2 < 1/4: the terms fall by at least r^2, so
+// the tail after degree K is below c_{K+1} r^2(K+1) / (1 - r^2) <= 4/3 of its first term, kept
+// below 2^-60: 2^-58 of G >= 1/3.
+inline int g_series_degree(double max_r2) {
+  int k = 0;
+  double term = kGSeries[1] * max_r2;
+  while (k + 2 < kGSeriesTerms && term > 0x1p-60) {
+    ++k;
+    term *= max_r2 *
+            (kGSeries[static_cast<std::size_t>(k + 1)] / kGSeries[static_cast<std::size_t>(k)]);
+  }
+  return k;
+}
+// The series to degree K by Horner's rule (no divisions: the set-up's fit evaluates it at every
+// node of its DCT).
+inline double g_series(double r2, int degree) {
+  double sum = kGSeries[static_cast<std::size_t>(degree)];
+  for (int k = degree - 1; k >= 0; --k)
+    sum = sum * r2 + kGSeries[static_cast<std::size_t>(k)];
+  return sum;
+}
+inline double G(double r2) {
+  if (r2 < 0.25) return g_series(r2, g_series_degree(r2));
   const double r = std::sqrt(r2), h = std::sqrt(std::max(0.0, 1.0 - r2));
   return (std::atan2(r, h) - r * h) / (2.0 * r * r2);
 }
@@ -212,7 +236,7 @@ struct ProjectedMap {
   static constexpr double kModelTruncation = 1e-7;
   static constexpr double kModelFirstHarmonic = 1e-3;
 
-  MapGeometry g;
+  MapGeometry g;           // the shape only: omega and quadrant are 0 (not needed)
   Vec3 n = Vec3::UnitZ();  // the receiver normal (unit) in R_e
   double P = 0.0;          // projected solid angle
   bool clipped = false;
@@ -227,7 +251,7 @@ struct ProjectedMap {
   // length). Degenerate input, or a disk wholly below the receiver's horizon, give !valid().
   static ProjectedMap make(const Disk& disk, const Vec3& o, const Vec3& receiver_normal) noexcept {
     ProjectedMap m;
-    m.g = MapGeometry::make(disk, o);
+    m.g = MapGeometry::make_shape(disk, o);  // the solid angle is not needed
     const double len = receiver_normal.norm();
     if (m.g.empty || !(len > 0.0) || !std::isfinite(len)) {
       m.g.empty = true;
@@ -257,13 +281,14 @@ struct ProjectedMap {
     } else {
       m.make_clipped();
     }
-    if (!(m.P > 0.0) || !std::isfinite(m.P)) m.g.empty = true;
+    // As MapGeometry::finish_totals for Omega: below the smallest normal double, 1 / P overflows.
+    if (!(m.P >= std::numeric_limits<double>::min()) || !std::isfinite(m.P)) m.g.empty = true;
     return m;
   }
   // Without a receiver normal: the cosine about the ellipse's centre direction z_e (a density
   // positive on the whole ellipse, so f / pdf stays unbiased for any f).
   static ProjectedMap make(const Disk& disk, const Vec3& o) noexcept {
-    const MapGeometry geo = MapGeometry::make(disk, o);
+    const MapGeometry geo = MapGeometry::make_shape(disk, o);
     return make(disk, o, geo.empty ? Vec3::UnitZ() : geo.frame.z);
   }
 
@@ -524,7 +549,7 @@ struct ProjectedMap {
       // (reverted_start); where that harmonic is strong, one Halley step of the model (the
       // first few harmonics: cheaper) takes it to within the model's truncation of the root,
       // where one evaluation of the full series usually ends the solve.
-      math::AngleCosSin at = reverted_start({x0, std::cos(x0), std::sin(x0)}, lo, hi);
+      math::AngleCosSin at = reverted_start(math::turn_sincos(x0), lo, hi);  // x0 in [0, 2 pi]
       double start = at.s;
       int evaluations = 0;
       if (series.n_model > 0) {
@@ -666,8 +691,11 @@ struct ProjectedMap {
                                ? RadialSeries::acosh1p(2.0 * g.one_minus_a2 / g.a2_minus_b2)
                                : HUGE_VAL;
     const double g0 = projected_detail::G(a2);
+    // Every node's r^2 is at most a^2: below 1/4, one degree of the series serves them all.
+    const int degree = a2 < 0.25 ? projected_detail::g_series_degree(a2) : -1;
     const RadialSeries fit = RadialSeries::fit(log_rho, g0, [&](double c2, double s2) {
-      return projected_detail::G(a2 * c2 + b2 * s2) - g0;
+      const double r2 = a2 * c2 + b2 * s2;
+      return (degree >= 0 ? projected_detail::g_series(r2, degree) : projected_detail::G(r2)) - g0;
     });
     series = Series{};
     if (fit.n > 0 && fit.n <= kSeriesCapacity) {

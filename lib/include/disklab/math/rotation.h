@@ -1,8 +1,9 @@
 #pragma once
 // An angle with its cosine and sine, moved by a step without a library call when the step is
 // small: the root solves' iterates move by ever smaller steps, and each step's sine and cosine
-// follow from the previous ones by a rotation. Both functions are forced inline: called out of
-// line, the call costs as much as the polynomial saves.
+// follow from the previous ones by a rotation; larger steps, and starting values, take sine and
+// cosine polynomials after a quadrant reduction. All are forced inline: called out of line, the
+// call costs as much as the polynomial saves.
 #include <cmath>
 
 namespace disklab::math {
@@ -11,7 +12,7 @@ struct AngleCosSin {
   double s = 0.0, cs = 1.0, ss = 0.0;  // the angle, its cosine and sine
 };
 
-// Steps up to this size take the rotation; larger ones call std::cos and std::sin.
+// Steps up to this size take the rotation; larger ones turn_sincos (x in [0, 7]) or the library.
 inline constexpr double kSmallRotation = 0.125;
 
 // sin(d) and 1 - cos(d) for |d| <= kSmallRotation by their Taylor series, as short as the step
@@ -39,18 +40,6 @@ inline constexpr double kSmallRotation = 0.125;
   }
 }
 
-// The angle `x` with its cosine and sine, from `at`'s. Near at.s the rotation by d = x - at.s:
-// sin(x) = sin + (cos sin_d - sin vers_d), cos(x) = cos - (sin sin_d + cos vers_d), whose
-// corrections are as small as d (a few ulps more than the library's own rounding).
-[[gnu::always_inline]] inline AngleCosSin moved_to(const AngleCosSin& at, double x) {
-  const double d = x - at.s;
-  if (d == 0.0) return at;
-  if (!(std::abs(d) <= kSmallRotation)) return {x, std::cos(x), std::sin(x)};
-  double sin_d, vers_d;
-  sin_and_versine_small(d, sin_d, vers_d);
-  return {x, at.cs - (at.ss * sin_d + at.cs * vers_d), at.ss + (at.cs * sin_d - at.ss * vers_d)};
-}
-
 // The angle x in [0, pi/2] with its cosine and sine, without a library call (the radial maps'
 // per-sample tau = t pi/2): on [0, pi/4] the Taylor series of sin through y^17 and of cos
 // through y^16 (remainders below 1e-19 and 3e-18 relative at pi/4), above it the same at
@@ -75,6 +64,46 @@ inline constexpr double kSmallRotation = 0.125;
   const double sin_y = y + (y * z) * p;
   const double cos_y = (1.0 - 0.5 * z) + z2 * q;
   return upper ? AngleCosSin{x, sin_y, cos_y} : AngleCosSin{x, cos_y, sin_y};
+}
+
+// The angle x in [0, 2 pi] with its cosine and sine, without a library call: x = q pi/2 + y,
+// q the nearest integer to x / (pi/2) and |y| <= pi/4, y by Cody and Waite's reduction in three
+// parts of pi/2 (q kP1 and q kP2 exact for q <= 4, x - q kP1 exact by Sterbenz's lemma, and the
+// difference with q kP2 too where y is small), so that y is within half an ulp of itself even
+// next to a multiple of pi/2, where its sine is the small one of the two values; then
+// quarter_sincos(|y|) with sin y's sign, turned by q quarter turns.
+[[gnu::always_inline]] inline AngleCosSin turn_sincos(double x) {
+  constexpr double kP1 = 0x1.921fb544p0, kP2 = 0x1.0b4611a6p-34, kP3 = 0x1.3198a2e037073p-69;
+  const int q = static_cast<int>(x * (2.0 / 3.141592653589793) + 0.5);
+  const double y = ((x - q * kP1) - q * kP2) - q * kP3;
+  AngleCosSin r = quarter_sincos(std::abs(y));
+  if (y < 0.0) r.ss = -r.ss;
+  switch (q & 3) {
+    case 1:
+      return {x, -r.ss, r.cs};
+    case 2:
+      return {x, -r.cs, -r.ss};
+    case 3:
+      return {x, r.ss, -r.cs};
+    default:
+      return {x, r.cs, r.ss};
+  }
+}
+
+// The angle `x` with its cosine and sine, from `at`'s. Near at.s the rotation by d = x - at.s:
+// sin(x) = sin + (cos sin_d - sin vers_d), cos(x) = cos - (sin sin_d + cos vers_d), whose
+// corrections are as small as d (a few ulps more than the library's own rounding). Larger steps
+// start afresh: turn_sincos where x is in its range, else std::cos and std::sin.
+[[gnu::always_inline]] inline AngleCosSin moved_to(const AngleCosSin& at, double x) {
+  const double d = x - at.s;
+  if (d == 0.0) return at;
+  if (!(std::abs(d) <= kSmallRotation)) {
+    if (x >= 0.0 && x <= 7.0) return turn_sincos(x);  // within turn_sincos's range (q <= 4)
+    return {x, std::cos(x), std::sin(x)};
+  }
+  double sin_d, vers_d;
+  sin_and_versine_small(d, sin_d, vers_d);
+  return {x, at.cs - (at.ss * sin_d + at.cs * vers_d), at.ss + (at.cs * sin_d - at.ss * vers_d)};
 }
 
 }  // namespace disklab::math
