@@ -83,26 +83,38 @@ TEST(Rotation, NoStepReturnsTheSameValues) {
 
 }  // namespace
 
+namespace {
+
+// Distance of a double from a long-double reference in ulps of the value (an ulp of v taken as
+// 2^(ilogb(v) - 52)); a zero reference (sin 0) must be matched exactly.
+double ulps(double got, long double ref) {
+  if (ref == 0.0L) return got == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
+  const long double ulp = std::ldexp(1.0L, std::ilogb(static_cast<double>(ref)) - 52);
+  return static_cast<double>(std::abs(got - ref) / ulp);
+}
+
+// Checks `sincos(x)` against long double within `bound` ulps of each value, keeping the worst.
+template <class SinCos>
+void expect_sincos_within(SinCos&& sincos, double x, double bound, double& worst) {
+  const AngleCosSin a = sincos(x);
+  EXPECT_EQ(a.s, x);
+  const long double rs = std::sin(static_cast<long double>(x)),
+                    rc = std::cos(static_cast<long double>(x));
+  const double es = ulps(a.ss, rs), ec = ulps(a.cs, rc);
+  worst = std::max({worst, es, ec});
+  EXPECT_LE(es, bound) << "x = " << x;
+  EXPECT_LE(ec, bound) << "x = " << x;
+}
+
+}  // namespace
+
 // quarter_sincos against long double on [0, pi/2]: its Taylor remainders are below 3e-18
 // relative, and the roundings of y = pi/2 - x (half an ulp of y) and of the sums make about an
-// ulp; 2 ulps of each value (an ulp of a value v taken as 2^(ilogb(v) - 52)).
+// ulp; 2 ulps of each value.
 TEST(Rotation, QuarterSincosAccurateOnTheFirstQuadrant) {
-  auto ulps = [](double got, long double ref) {
-    // sin(0) = 0 must come out exact: any other value is infinitely many ulps off.
-    if (ref == 0.0L) return got == 0.0 ? 0.0 : std::numeric_limits<double>::infinity();
-    const long double ulp = std::ldexp(1.0L, std::ilogb(static_cast<double>(ref)) - 52);
-    return static_cast<double>(std::abs(got - ref) / ulp);
-  };
   double worst = 0.0;
   auto check = [&](double x) {
-    const AngleCosSin a = disklab::math::quarter_sincos(x);
-    EXPECT_EQ(a.s, x);
-    const long double rs = std::sin(static_cast<long double>(x)),
-                      rc = std::cos(static_cast<long double>(x));
-    if (x > 0.0) worst = std::max(worst, ulps(a.ss, rs));
-    worst = std::max(worst, ulps(a.cs, rc));
-    EXPECT_LE(ulps(a.ss, rs), 2.0) << "x = " << x;
-    EXPECT_LE(ulps(a.cs, rc), 2.0) << "x = " << x;
+    expect_sincos_within(disklab::math::quarter_sincos, x, 2.0, worst);
   };
   const double half_pi = std::numbers::pi / 2;
   for (const double x : {0.0, 1e-300, 1e-9, half_pi / 2, std::nextafter(half_pi / 2, 0.0),
@@ -113,35 +125,19 @@ TEST(Rotation, QuarterSincosAccurateOnTheFirstQuadrant) {
   disklab::sequence::Pcg32 rng(5);
   for (int i = 0; i < 100000; ++i)
     check(half_pi * rng.next_double());
-  EXPECT_EQ(disklab::math::quarter_sincos(0.0).ss, 0.0);
   EXPECT_EQ(disklab::math::quarter_sincos(0.0).cs, 1.0);
   std::printf("  worst %.3f ulp\n", worst);
 }
 
 // turn_sincos against long double on [0, 2 pi], the quadrants' ends included (where the reduced
-// angle is tiny, or pi/2 minus tiny, and the small one of the two values must stay accurate
-// relative to itself): quarter_sincos's 2 ulps, since the reduction's one rounding is half an
-// ulp of the reduced angle, i.e. of the small value.
+// angle is tiny and its sine, the small one of the two values, must stay accurate relative to
+// itself): quarter_sincos's 2 ulps, since the reduction's one rounding is half an ulp of the
+// reduced angle, i.e. of the small value.
 TEST(Rotation, TurnSincosAccurateOnTheWholeTurn) {
-  auto ulps = [](double got, long double ref) {
-    const long double ulp = std::ldexp(1.0L, std::ilogb(static_cast<double>(ref)) - 52);
-    return static_cast<double>(std::abs(got - ref) / ulp);
-  };
   double worst = 0.0;
-  auto check = [&](double x) {
-    const AngleCosSin a = disklab::math::turn_sincos(x);
-    EXPECT_EQ(a.s, x);
-    const long double rs = std::sin(static_cast<long double>(x)),
-                      rc = std::cos(static_cast<long double>(x));
-    worst = std::max({worst, x > 0.0 ? ulps(a.ss, rs) : 0.0, ulps(a.cs, rc)});
-    if (x > 0.0) {
-      EXPECT_LE(ulps(a.ss, rs), 2.0) << "x = " << x;
-    }
-    EXPECT_LE(ulps(a.cs, rc), 2.0) << "x = " << x;
-  };
+  auto check = [&](double x) { expect_sincos_within(disklab::math::turn_sincos, x, 2.0, worst); };
   const double half_pi = std::numbers::pi / 2;
   check(0.0);
-  EXPECT_EQ(disklab::math::turn_sincos(0.0).ss, 0.0);
   for (int q = 1; q <= 4; ++q) {
     double x = q * half_pi;
     for (int k = 0; k < 8; ++k) {
