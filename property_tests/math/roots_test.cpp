@@ -55,6 +55,34 @@ RC_GTEST_PROP(Halley, FlatCubicFallsBackInsideTheBracket, ()) {
             kTol + 16 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(c)));
 }
 
+// halley_step's one-division form against the textbook two-division form dn / (1 + dn g2 /
+// (2 g1)), dn = -g / g1, over values and derivatives of every sign and 20 decades of scale each:
+// both round a handful of operations on the same quantities, so they agree to a few ulps of the
+// step (16 eps, relative), and choose the same kind of step away from its boundary (denominator
+// 1/2). Beyond g1 in [2^-400, 2^400], where g1^2 would leave double's range, the step stays
+// finite and is the two-division form itself.
+RC_GTEST_PROP(Halley, OneDivisionStepMatchesTheTextbookForm, ()) {
+  auto scaled = [](int decade, int mantissa) { return std::pow(10.0, decade) * mantissa / 1000.0; };
+  const double g1 = scaled(*rc::gen::inRange(-10, 10), *rc::gen::inRange(1, 10000));
+  const double g = scaled(*rc::gen::inRange(-10, 10), *rc::gen::inRange(-10000, 10000));
+  const double g2 = scaled(*rc::gen::inRange(-10, 10), *rc::gen::inRange(-10000, 10000));
+  const Derivatives3 e{g, g1, g2, 0.0};
+  const auto step = disklab::math::halley_step(e);
+  const double dn = -g / g1, denom = 1.0 + 0.5 * dn * g2 / g1;
+  if (std::abs(denom - 0.5) > 1e-9) RC_ASSERT(step.halley == (denom >= 0.5));
+  const double textbook = step.halley ? dn / denom : dn;
+  RC_ASSERT(std::abs(step.delta - textbook) <=
+            16 * std::numeric_limits<double>::epsilon() * std::abs(textbook));
+  // Out of range of g1^2: the two-division form, finite.
+  for (const double tiny_or_huge : {0x1p-450, 0x1p450}) {
+    const Derivatives3 x{g * tiny_or_huge, g1 * tiny_or_huge, g2 * tiny_or_huge, 0.0};
+    const auto s = disklab::math::halley_step(x);
+    RC_ASSERT(std::isfinite(s.delta));
+    RC_ASSERT(std::abs(s.delta - textbook) <=
+              16 * std::numeric_limits<double>::epsilon() * std::abs(textbook));
+  }
+}
+
 TEST(Halley, FewerEvaluationsThanNewtonOnKepler) {
   // Cubic against quadratic convergence from the same start, with each solver's own final step
   // (Newton's: a step below 1e-9 of the bracket).

@@ -228,6 +228,7 @@ struct ProjectedMap {
     int n = 0;
     int n_model = 0;  // the model: the first n_model terms (0: none; see solve_s)
     double g0 = 0.0;
+    double inv_nz = 0.0;                 // 1 / n_z (reverted_start)
     double g[kSeriesCapacity + 1] = {};  // g[k - 1] = g_k; g[n] = 0 (the loops read it)
   };
   // The model's truncation, relative to the total 2 P, and the least strength of the first
@@ -307,8 +308,9 @@ struct ProjectedMap {
     const double px = g.a * cs, py = g.b * ss;
     md.r2 = px * px + py * py;
     md.r = std::sqrt(md.r2);
-    md.cos_phi = px / md.r;
-    md.sin_phi = py / md.r;
+    const double inv_r = 1.0 / md.r;  // one division for both
+    md.cos_phi = px * inv_r;
+    md.sin_phi = py * inv_r;
     md.A = n.x() * md.cos_phi + n.y() * md.sin_phi;
     md.B = n.y() * md.cos_phi - n.x() * md.sin_phi;
     const double hr = g.hr_parametric(cs, ss);
@@ -517,8 +519,9 @@ struct ProjectedMap {
     const double e2 = p0 * p0 + q0 * q0;
     if (!(e2 <= 0.25 * nz * nz) || e2 < kModelFirstHarmonic * kModelFirstHarmonic * nz * nz)
       return at;
-    const double omc = at.cs >= 0.0 ? at.ss * at.ss / (1.0 + at.cs) : 1.0 - at.cs;
-    const double inv_nz = 1.0 / nz;
+    // 1 - cos s directly: its cancellation near s = 0 costs ~1e-16 absolute, nothing for a start.
+    const double omc = 1.0 - at.cs;
+    const double inv_nz = series.inv_nz;
     const double r = (p0 * at.ss + q0 * omc) * inv_nz, r1 = (p0 * at.cs + q0 * at.ss) * inv_nz;
     const double r2 = (q0 * at.cs - p0 * at.ss) * inv_nz;
     const double delta = -r * (1.0 - r1 + r1 * r1 + 0.5 * r * r2);
@@ -539,8 +542,11 @@ struct ProjectedMap {
       hi = pieces.edge[piece + 1];
       base = pieces.cum[piece];
     }
+    // The fraction of the piece's part of 2 P (unclipped: u.x itself, without a division).
     const double span = (clipped ? pieces.cum[piece + 1] - base : total);
-    const double frac = span > 0.0 ? std::clamp((target - base) / span, 0.0, 1.0) : 0.0;
+    const double frac = !clipped     ? std::clamp(u1, 0.0, 1.0)
+                        : span > 0.0 ? std::clamp((target - base) / span, 0.0, 1.0)
+                                     : 0.0;
     const double x0 = lo + frac * (hi - lo), f_tol = kProjectedNewtonTol * total;
     math::RootResult root;
     if (!clipped && series.n > 0) {
@@ -556,9 +562,7 @@ struct ProjectedMap {
         const math::Derivatives3 e = series_twice_c_derivatives(at.s, at.cs, at.ss, series.n_model);
         evaluations = 1;
         if (e.d1 > 0.0) {
-          const double inv_d1 = 1.0 / e.d1;
-          const double dn = -(e.g - target) * inv_d1, denom = 1.0 + 0.5 * dn * e.d2 * inv_d1;
-          const double next = at.s + (denom >= 0.5 ? dn / denom : dn);
+          const double next = at.s + math::halley_step({e.g - target, e.d1, e.d2, e.d3}).delta;
           if (next > lo && next < hi) start = next;
         }
       }
@@ -702,6 +706,7 @@ struct ProjectedMap {
       // The fit stores the integral's sine series, b[k - 1] = g_k / (2k).
       series.n = fit.n;
       series.g0 = fit.a0;
+      series.inv_nz = 1.0 / n.z();
       for (int k = 1; k <= fit.n; ++k)
         series.g[k - 1] = 2.0 * k * fit.b[k - 1];
       choose_model();
