@@ -30,6 +30,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <optional>
 #include <tuple>
@@ -95,14 +96,13 @@ inline constexpr std::array<double, kGSeriesTerms> kGSeries = [] {
 // the tail after degree K is below c_{K+1} r^2(K+1) / (1 - r^2) <= 4/3 of its first term, kept
 // below 2^-60: 2^-58 of G >= 1/3.
 inline int g_series_degree(double max_r2) {
-  int k = 0;
+  std::size_t k = 0;
   double term = kGSeries[1] * max_r2;
-  while (k + 2 < kGSeriesTerms && term > 0x1p-60) {
+  while (k + 2 < kGSeries.size() && term > 0x1p-60) {
     ++k;
-    term *= max_r2 *
-            (kGSeries[static_cast<std::size_t>(k + 1)] / kGSeries[static_cast<std::size_t>(k)]);
+    term *= max_r2 * (kGSeries[k + 1] / kGSeries[k]);
   }
-  return k;
+  return static_cast<int>(k);
 }
 // The series to degree K by Horner's rule (no divisions: the set-up's fit evaluates it at every
 // node of its DCT).

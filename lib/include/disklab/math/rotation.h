@@ -74,6 +74,9 @@ inline constexpr double kSmallRotation = 0.125;
 // quarter_sincos(|y|) with sin y's sign, turned by q quarter turns.
 [[gnu::always_inline]] inline AngleCosSin turn_sincos(double x) {
   constexpr double kP1 = 0x1.921fb544p0, kP2 = 0x1.0b4611a6p-34, kP3 = 0x1.3198a2e037073p-69;
+  // Rounding by truncation of x (2/pi) + 1/2 (x >= 0; no library call): a q one off at a
+  // half-way point still leaves |y| <= pi/4 + a few ulps, within quarter_sincos's range.
+  // NOLINTNEXTLINE(bugprone-incorrect-roundings)
   const int q = static_cast<int>(x * (2.0 / 3.141592653589793) + 0.5);
   const double y = ((x - q * kP1) - q * kP2) - q * kP3;
   AngleCosSin r = quarter_sincos(std::abs(y));
