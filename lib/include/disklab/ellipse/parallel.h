@@ -46,8 +46,8 @@ struct ParallelMap {
 
   static RadialSeries make_series(const SphericalEllipse& se) {
     const double bt2 = se.b_t * se.b_t, k = 2.0 * se.a * se.b_t, om = se.one_minus_m;
-    const double rho_b = bt2 > 0.0 ? RadialSeries::acosh1p(2.0 / bt2) : HUGE_VAL;
-    const double rho_m = se.m > 0.0 ? RadialSeries::acosh1p(2.0 * om / se.m) : HUGE_VAL;
+    const double rho_b = bt2 > 0.0 ? RadialSeries::bernstein_rho(2.0 / bt2) : HUGE_VAL;
+    const double rho_m = se.m > 0.0 ? RadialSeries::bernstein_rho(2.0 * om / se.m) : HUGE_VAL;
     // F/k - 1 = c^2 / (Delta (1 + b_t^2 s^2)) - 1
     //         = -s^2 [(Delta + 1 - m)/(1 + Delta) + Delta b_t^2] / (Delta (1 + b_t^2 s^2)),
     // from 1 - Delta = m s^2 / (1 + Delta): positive terms only.

@@ -691,13 +691,13 @@ struct ProjectedMap {
     const double a2 = g.a * g.a, b2 = g.b * g.b;
     // G(r(s)) as a Chebyshev series in x = cos 2s, r^2 = p + q x; its branch point r^2 = 1 is at
     // x* = 1 + 2 cos^2(alpha) / (a^2 - b^2).
-    const double log_rho = g.a2_minus_b2 > 0.0
-                               ? RadialSeries::acosh1p(2.0 * g.one_minus_a2 / g.a2_minus_b2)
-                               : HUGE_VAL;
+    const double rho = g.a2_minus_b2 > 0.0
+                           ? RadialSeries::bernstein_rho(2.0 * g.one_minus_a2 / g.a2_minus_b2)
+                           : HUGE_VAL;
     const double g0 = projected_detail::G(a2);
     // Every node's r^2 is at most a^2: below 1/4, one degree of the series serves them all.
     const int degree = a2 < 0.25 ? projected_detail::g_series_degree(a2) : -1;
-    const RadialSeries fit = RadialSeries::fit(log_rho, g0, [&](double c2, double s2) {
+    const RadialSeries fit = RadialSeries::fit(rho, g0, [&](double c2, double s2) {
       const double r2 = a2 * c2 + b2 * s2;
       return (degree >= 0 ? projected_detail::g_series(r2, degree) : projected_detail::G(r2)) - g0;
     });

@@ -67,35 +67,41 @@ struct RadialSeries {
     const double A = g.one_minus_a2, B = g.one_minus_b2;
     const double diff = g.a2_minus_b2;  // B - A = a^2 - b^2
     const double ab = g.a * g.b;
-    // log rho = acosh(x*), x* - 1 = 2A / (B - A).
-    const double log_rho = diff > 0.0 ? acosh1p(2.0 * A / diff) : HUGE_VAL;
+    // rho = exp(acosh(x*)), x* - 1 = 2A / (B - A).
+    const double rho = diff > 0.0 ? bernstein_rho(2.0 * A / diff) : HUGE_VAL;
     // The DCT runs on dg_j = g_j - g_0, formed without cancellation (h_0 = cos(alpha)):
     //   g_j - g_0 = -a b (B - A) sin^2 s_j / ((h_0 + h_j)(1 + h_0)(1 + h_j)),
     // so the coefficients k >= 1 (where the constant g_0 contributes exactly nothing) carry
     // rounding relative to their own size, not to a b: for distant disks they are O(a^2 - b^2)
     // and would otherwise drown in the rounding of g_j.
     const double h0 = g.cos_alpha, g0 = ab / (1.0 + h0);
-    return fit(log_rho, g0, [&](double c2, double s2) {
+    return fit(rho, g0, [&](double c2, double s2) {
       const double hj = std::sqrt(A * c2 + B * s2);
       return -ab * diff * s2 / ((h0 + hj) * (1.0 + h0) * (1.0 + hj));
     });
   }
 
-  // acosh(1 + e) for e >= 0 without cancellation.
-  static double acosh1p(double e) { return std::log1p(e + std::sqrt(e * (2.0 + e))); }
+  // rho = exp(acosh(1 + e)) = 1 + e + sqrt(e (2 + e)) for e >= 0: the Bernstein ellipse through
+  // a branch point at x = 1 + e, whose Chebyshev coefficients then fall like rho^-k.
+  static double bernstein_rho(double e) { return 1.0 + e + std::sqrt(e * (2.0 + e)); }
 
   // The series of int_0^s G(cos 2s') ds' for an integrand whose Chebyshev coefficients decay at
-  // least like exp(-k log_rho): degree N (8..64) with N log_rho >= 60 log 2 (n = 0 if none
-  // suffices), coefficients by a DCT-I on N + 1 Chebyshev-Lobatto nodes s_j = j pi / (2N) of
-  // dg(cos^2 s_j, sin^2 s_j) = G_j - g0 (g0 = G at s = 0), trailing terms dropped.
+  // least like rho^-k: degree N (8..64) with rho^N >= 2^60 (n = 0 if none suffices; by squaring,
+  // without a logarithm), coefficients by a DCT-I on N + 1 Chebyshev-Lobatto nodes s_j = j pi /
+  // (2N) of dg(cos^2 s_j, sin^2 s_j) = G_j - g0 (g0 = G at s = 0), trailing terms dropped.
   template <class DG>
-  static RadialSeries fit(double log_rho, double g0, DG&& dg_at) {
+  static RadialSeries fit(double rho, double g0, DG&& dg_at) {
     RadialSeries out;
-    const double need = 60.0 * 0.6931471805599453 / log_rho;
-    if (!(need <= kMaxDegree) || !std::isfinite(g0)) return out;
+    if (!std::isfinite(g0)) return out;
     int n = 8;
-    while (n < need)
+    double rho_n = rho * rho;
+    rho_n *= rho_n;
+    rho_n *= rho_n;  // rho^8
+    while (!(rho_n >= 0x1p60)) {
+      if (n == kMaxDegree) return out;  // also for a NaN rho
       n *= 2;
+      rho_n *= rho_n;
+    }
     const auto& tab = tables();
     const int step = kMaxDegree / n;  // table stride for this degree
     double dg[kMaxDegree + 1] = {};   // zeroed: GCC cannot see the loop fill dg[0..n]
@@ -135,7 +141,7 @@ struct RadialSeries {
     // to at most |b_k| / (1 - 1/rho); below kSeriesDrop * quadrant for b_k and b_k+1 (two, so
     // that a coefficient passing near zero cannot end the series early), b_k and all later terms
     // are dropped. Only the terms kept are computed (the DCT is the cost of the set-up).
-    const double tail_factor = 1.0 / (1.0 - std::exp(-log_rho));
+    const double tail_factor = 1.0 / (1.0 - 1.0 / rho);  // 1 for rho = inf (a circle)
     const double drop = kSeriesDrop * quadrant;
     auto negligible = [&](double b) { return std::abs(b) * tail_factor <= drop; };
     double bk[kCapacity + 2];
