@@ -120,11 +120,7 @@ AnyMap AnyMap::make(MapKind kind, const Disk& disk, const Vec3& o) noexcept {
 
 double AnyMap::omega() const {
   if (!valid()) return 0.0;
-  if (const auto* p = std::get_if<ProjectedMap>(&map_)) {
-    MapGeometry g = p->g;  // its shape only (ProjectedMap::make)
-    g.finish_totals(0.0);
-    return g.omega;
-  }
+  if (const auto* p = std::get_if<ProjectedMap>(&map_)) return p->solid_angle();
   return geometry().omega;
 }
 

@@ -295,6 +295,13 @@ struct ProjectedMap {
 
   bool valid() const { return !g.empty; }
   double projected_solid_angle() const { return valid() ? P : 0.0; }
+  // The disk's solid angle Omega, computed on demand (g holds the shape only).
+  double solid_angle() const {
+    if (!valid()) return 0.0;
+    MapGeometry full = g;
+    full.finish_totals(0.0);
+    return full.omega;
+  }
 
   // The meridian at s; `kind` >= 0 takes its range as in a piece of that kind (the limit from
   // inside the piece, for the meridians at a piece's ends), -1 classifies it.
