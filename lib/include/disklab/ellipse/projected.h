@@ -33,7 +33,6 @@
 #include <cstddef>
 #include <limits>
 #include <optional>
-#include <tuple>
 #include <utility>
 
 #include "disklab/ellipse/map_geometry.h"
@@ -52,31 +51,30 @@ inline constexpr double kProjectedNewtonTol = 1e-15;
 
 namespace projected_detail {
 
-// S(t) = (t - sin t cos t) / 2 = (2t - sin 2t) / 4, by its Taylor series below t = 0.5 (where
-// the difference would cancel), sum_{k>=1} (-1)^(k+1) (2t)^(2k+1) / (4 (2k+1)!).
-inline double S(double t) {
-  if (t < 0.5) {
-    // (x^3 / 4) sum_{k>=1} (-1)^(k+1) y^(k-1) / (2k+1)!, x = 2t, y = x^2 <= 1. The sum is
-    // alternating and above 0.158: K terms leave a remainder below y^K / (2K+3)! / 0.158, under
-    // 1.1e-16 with K = 3 for y < 1e-4, K = 5 for y < 1e-2 and K = 8 up to y = 1.
-    const double x = 2.0 * t, y = x * x;
-    double p;
-    if (y < 1e-4) {
-      p = 1.0 / 6 - y * (1.0 / 120 - y * (1.0 / 5040));
-    } else if (y < 1e-2) {
-      p = 1.0 / 6 - y * (1.0 / 120 - y * (1.0 / 5040 - y * (1.0 / 362880 - y * (1.0 / 39916800))));
-    } else {
-      p = 1.0 / 6 -
-          y * (1.0 / 120 -
-               y * (1.0 / 5040 -
-                    y * (1.0 / 362880 -
-                         y * (1.0 / 39916800 -
-                              y * (1.0 / 6227020800 -
-                                   y * (1.0 / 1307674368000 - y * (1.0 / 355687428096000)))))));
-    }
-    return 0.25 * x * y * p;
+// S(t) = (t - sin t cos t) / 2 = (2t - sin 2t) / 4 for t < 0.5 (where the difference would
+// cancel) by its Taylor series sum_{k>=1} (-1)^(k+1) (2t)^(2k+1) / (4 (2k+1)!) =
+// (x^3 / 4) sum_{k>=1} (-1)^(k+1) y^(k-1) / (2k+1)!, x = 2t, y = x^2 < 1. The sum is
+// alternating and above 0.158: K terms leave a remainder below y^K / (2K+3)! / 0.158, under
+// 1.1e-16 with K = 3 for y < 1e-4, K = 5 for y < 1e-2 and K = 8 up to y = 1. Estrin's scheme:
+// the altitude solve evaluates it per iterate. Finite (and unused) beyond t = 0.5.
+inline double S_series(double t) {
+  const double x = 2.0 * t, y = x * x, y2 = y * y;
+  constexpr double c0 = 1.0 / 6, c1 = -1.0 / 120, c2 = 1.0 / 5040, c3 = -1.0 / 362880,
+                   c4 = 1.0 / 39916800, c5 = -1.0 / 6227020800, c6 = 1.0 / 1307674368000,
+                   c7 = -1.0 / 355687428096000;
+  double p;
+  if (y < 1e-4) {
+    p = (c0 + c1 * y) + y2 * c2;
+  } else if (y < 1e-2) {
+    p = (c0 + c1 * y) + y2 * ((c2 + c3 * y) + y2 * c4);
+  } else {
+    const double y4 = y2 * y2;
+    p = ((c0 + c1 * y) + y2 * (c2 + c3 * y)) + y4 * ((c4 + c5 * y) + y2 * (c6 + c7 * y));
   }
-  return 0.25 * (2.0 * t - std::sin(2.0 * t));
+  return 0.25 * x * y * p;
+}
+inline double S(double t) {
+  return t < 0.5 ? S_series(t) : 0.25 * (2.0 * t - std::sin(2.0 * t));
 }
 
 // G(r) = S(asin r) / r^3 as a function of r^2 < 1 (S'(r) = r^2 / sqrt(1 - r^2)): below r^2 = 1/4
@@ -372,7 +370,10 @@ struct ProjectedMap {
   // sin^2(x) / 2, whose terms differ in sign only below the horizon angle (a bounded loss).
   // With sin x and cos x given; S(x) = (x - sin x cos x) / 2 above the series' range.
   double G(const Meridian& md, double x, double sx, double cx) const {
-    const double sxx = x < 0.5 ? projected_detail::S(x) : 0.5 * (x - sx * cx);
+    // Both forms, then a choice: iterates fall on either side of 0.5 at random, a branch would
+    // be mispredicted (the series' own tiers follow the meridian's range: predictable).
+    const double series = projected_detail::S_series(x), closed = 0.5 * (x - sx * cx);
+    const double sxx = x < 0.5 ? series : closed;
     return md.ga * sxx + 0.5 * md.gb * sx * sx + md.gc * (x - sxx);
   }
   double G(const Meridian& md, double x) const { return G(md, x, std::sin(x), std::cos(x)); }
@@ -488,8 +489,10 @@ struct ProjectedMap {
     // are all positive for small s (no 1 - cos cancellation, no division).
     const double c2 = cs * cs - ss * ss, s2 = 2.0 * cs * ss, two_ss2 = 2.0 * ss * ss;
     double ck = cs, sk = ss, omc = cs >= 0.0 ? ss * ss / (1.0 + cs) : 1.0 - cs;
-    double p, q;
-    std::tie(p, q) = harmonic(0);
+    // harmonic(j) with g_j carried from one term to the next (one load per term).
+    const double kx = n.x() * g.a, ky = n.y() * g.b;
+    double g_lo = 2.0 * series.g0, g_hi = series.g[0];
+    double p = kx * (g_lo + g_hi), q = ky * (g_lo - g_hi);
     double v = 0.0, d1 = 0.0, d2 = 0.0, d3 = 0.0, k = 1.0;
     for (int j = 0;; ++j) {
       const double u = p * ck + q * sk;
@@ -498,7 +501,10 @@ struct ProjectedMap {
       d2 += k * (q * ck - p * sk);
       d3 -= k * k * u;
       if (j == last) break;
-      std::tie(p, q) = harmonic(j + 1);
+      g_lo = g_hi;
+      g_hi = series.g[j + 1];
+      p = kx * (g_lo + g_hi);
+      q = ky * (g_lo - g_hi);
       k += 2.0;
       omc = omc * c2 + two_ss2 + sk * s2;
       const double cn = ck * c2 - sk * s2;
@@ -625,9 +631,11 @@ struct ProjectedMap {
     math::AngleCosSin at;
     if (range <= math::kHalfPi) {
       const double sx = std::sqrt(f) * sr, cx = std::sqrt(cr * cr + (1.0 - f) * sr * sr);
-      // The angle from the better conditioned of the two (x, sin x and cos x consistent to an
-      // ulp); asin(sin(range)) may round above range.
-      at = {std::min(sx <= cx ? std::asin(sx) : std::acos(cx), range), cx, sx};
+      // The angle from the better conditioned of the two, asin of the smaller (x, sin x and
+      // cos x consistent to an ulp; one call and a choice, not a branch: which one is smaller
+      // is as random as u.y); asin(sin(range)) may round above range.
+      const double w = std::asin(std::min(sx, cx));
+      at = {std::min(sx <= cx ? w : math::kHalfPi - w, range), cx, sx};
     } else {
       const double x0 = f * range;
       at = {x0, std::cos(x0), std::sin(x0)};

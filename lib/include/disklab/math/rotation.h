@@ -15,28 +15,26 @@ struct AngleCosSin {
 // Steps up to this size take the rotation; larger ones turn_sincos (x in [0, 7]) or the library.
 inline constexpr double kSmallRotation = 0.125;
 
-// sin(d) and 1 - cos(d) for |d| <= kSmallRotation by their Taylor series, as short as the step
-// allows (a root solve's last steps are tiny): the first term left out is below 3e-18 of the
-// value (relative) on each tier. Horner in y = d^2 with the coefficients 1 / k!, multiplied:
-// y <= 1/64 keeps every term after the first below 3e-3 of the sum, so their rounding is sub-ulp.
+// sin(d) and 1 - cos(d) for |d| <= kSmallRotation by their Taylor series in two tiers: tiny
+// steps (a root solve's last ones) through d^3 and d^4, all others through d^11 and d^12; the
+// first term left out is below 3e-18 of the value (relative) on each. Two tiers, not more: the
+// size of a solve's first steps is as random as its input, and a mispredicted choice of tier
+// costs more than the longer polynomial. Estrin's scheme in y = d^2 with the coefficients
+// 1 / k!: y <= 1/64 keeps every term after the first below 3e-3 of the sum, so their rounding
+// is sub-ulp.
 [[gnu::always_inline]] inline void sin_and_versine_small(double d, double& sin_d, double& vers_d) {
   const double y = d * d;
-  if (y <= 1e-8) {  // |d| <= 1e-4: through d^3 and d^4 (next: d^4 / 120, d^4 / 360 relative)
+  if (y <= 1e-8) {  // |d| <= 1e-4 (next terms: d^4 / 120, d^4 / 360 relative)
     sin_d = d - d * y * (1.0 / 6);
     vers_d = 0.5 * y - y * y * (1.0 / 24);
-  } else if (y <= 1.0 / 1024) {  // |d| <= 1/32: through d^7 and d^8 (next: d^8 / 9!, d^8 / 1814400)
-    sin_d = d + d * y * (-1.0 / 6 + y * (1.0 / 120 + y * (-1.0 / 5040)));
-    vers_d = 0.5 * y + y * y * (-1.0 / 24 + y * (1.0 / 720 + y * (-1.0 / 40320)));
-  } else {  // through d^11 and d^12 (next: d^12 / 13!, d^12 / 43589145600)
-    sin_d =
-        d + d * y *
-                (-1.0 / 6 +
-                 y * (1.0 / 120 + y * (-1.0 / 5040 + y * (1.0 / 362880 + y * (-1.0 / 39916800)))));
-    vers_d =
-        0.5 * y +
-        y * y *
-            (-1.0 / 24 +
-             y * (1.0 / 720 + y * (-1.0 / 40320 + y * (1.0 / 3628800 + y * (-1.0 / 479001600)))));
+  } else {  // next terms: d^12 / 13!, d^12 / 43589145600 relative
+    const double y2 = y * y, y4 = y2 * y2;
+    const double ps = ((-1.0 / 6 + y * (1.0 / 120)) + y2 * (-1.0 / 5040 + y * (1.0 / 362880))) +
+                      y4 * (-1.0 / 39916800);
+    const double pv = ((-1.0 / 24 + y * (1.0 / 720)) + y2 * (-1.0 / 40320 + y * (1.0 / 3628800))) +
+                      y4 * (-1.0 / 479001600);
+    sin_d = d + (d * y) * ps;
+    vers_d = 0.5 * y + y2 * pv;
   }
 }
 
