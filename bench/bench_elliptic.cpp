@@ -28,6 +28,9 @@
 //
 // F/mixed/own is ellint_f<double> as a caller gets it: F's double-double kernel (same file and
 // copy as Pi's) where the CPU runs it; F/mixed/own-portable always times the long-double path.
+// F/mixed/own-double times the kernel's algorithm without its error terms (see f_double_alg):
+// what faithful rounding costs in speed. The summary prints how far both plain-double variants
+// land from the library's values on the mixed set.
 //
 // The summary after the table repeats the median ratios and checks the issues' targets:
 // own Pi <= 0.4x the time of boost::math::ellint_3 with promote_double<false> (issue 4), and
@@ -37,6 +40,7 @@
 // --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <array>
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/math/special_functions/ellint_3.hpp>
@@ -113,7 +117,15 @@ double seconds(Clock::time_point a, Clock::time_point b) {
 
 // The functions compared, one per (integral, implementation).
 enum class Fn { kF, kPi, kRF, kRJ };
-enum class Impl { kOwn, kBoostDouble, kBoostDefault, kOwnDoubleLoop, kOwnPortable, kOwnAvx2 };
+enum class Impl {
+  kOwn,
+  kBoostDouble,
+  kBoostDefault,
+  kOwnDoubleLoop,
+  kOwnPortable,
+  kOwnAvx2,
+  kOwnDoubleAlg
+};
 
 // Pi as elliptic_legendre.h computes it, but with the duplication loop in double instead of long
 // double: the speed side of the accuracy trade-off (not a library function: in double the loop's
@@ -137,6 +149,42 @@ double pi_double_loop(double n, double phi, double m) {
          (sw / smn) * std::atan(sw * smn * a.s * a.c / std::sqrt(a.delta2));
 }
 
+// One duplication step on the roots, r_i <- sqrt((r_i + r_j)(r_i + r_k)), without the halving.
+__attribute__((target("avx2,fma"), always_inline)) inline void f_double_step(double& r0, double& r1,
+                                                                             double& r2) {
+  const double s01 = r0 + r1, s12 = r1 + r2, s02 = r0 + r2;
+  r0 = std::sqrt(s01 * s02);
+  r1 = std::sqrt(s01 * s12);
+  r2 = std::sqrt(s02 * s12);
+}
+
+// F as the kernel computes it (elliptic_pi_dd_kernel.inc, f_dd: duplication on the roots c, Delta,
+// 1 of R_F's arguments, two steps and more while their spread exceeds the kernel's tolerance 0.1,
+// then the degree-13 series) with every quantity a plain double and libm's sincos: the
+// kernel's cost without the double-double error terms that make it faithful. Compiled for the
+// kernel's AVX2 + FMA; the series is the kernel's own (one call more than the kernel pays).
+// Registered where the kernel runs. Not a library function: it is not faithful (the summary
+// prints its distance from ellint_f).
+__attribute__((target("avx2,fma"))) double f_double_alg(double phi, double m) {
+  if (phi < 0x1p-26) return phi;
+  double s, c;
+  ::sincos(phi, &s, &c);
+  double r0 = c, r1 = std::sqrt(std::fma(c, c, (1.0 - m) * s * s)), r2 = 1.0, scale = 4.0;
+  f_double_step(r0, r1, r2);
+  f_double_step(r0, r1, r2);
+  for (;; scale *= 2.0) {
+    const double inv_mu = 3.0 / (r0 + r1 + r2);
+    const double d0 = std::fma(r0, inv_mu, -1.0), d1 = std::fma(r1, inv_mu, -1.0), d01 = d0 + d1;
+    if (std::max(std::fabs(d0), std::max(std::fabs(d1), std::fabs(d01))) <= 0.1) [[likely]] {
+      const double p01 = d0 * d1;
+      const double g =
+          dm::detail::f_dd_series(dm::detail::pi_dd_kernel(), p01 - d01 * d01, -p01 * d01);
+      return s * inv_mu * (1.0 + g) * scale;
+    }
+    f_double_step(r0, r1, r2);
+  }
+}
+
 template <Fn fn, Impl impl>
 inline double eval(const Input& r) {
   if constexpr (fn == Fn::kF) {
@@ -146,6 +194,7 @@ inline double eval(const Input& r) {
     if constexpr (impl == Impl::kBoostDefault) return boost::math::ellint_1(r.k, r.phi);
     if constexpr (impl == Impl::kOwnPortable)
       return dm::detail::ellint_f_core(r.phi, r.m, 1.0 - r.m);
+    if constexpr (impl == Impl::kOwnDoubleAlg) return f_double_alg(r.phi, r.m);
   } else if constexpr (fn == Fn::kPi) {
     if constexpr (impl == Impl::kOwn) return dm::ellint_pi(r.n, r.phi, r.m);
     if constexpr (impl == Impl::kBoostDouble)
@@ -228,6 +277,11 @@ void register_benchmarks() {
                                Band::kMixed)
       ->UseManualTime()
       ->Unit(benchmark::kMicrosecond);
+  if (dm::detail::pi_dd_kernel_available())
+    benchmark::RegisterBenchmark("F/mixed/own-double", BM_Elliptic<Fn::kF, Impl::kOwnDoubleAlg>,
+                                 Band::kMixed)
+        ->UseManualTime()
+        ->Unit(benchmark::kMicrosecond);
   register_fn<Fn::kPi>("Pi", Band::kMixed, "mixed");
   benchmark::RegisterBenchmark("Pi/mixed/own-portable", BM_Elliptic<Fn::kPi, Impl::kOwnPortable>,
                                Band::kMixed)
@@ -247,6 +301,21 @@ void register_benchmarks() {
   register_fn<Fn::kPi>("Pi", Band::kNegativeLarge, "n<-1");
   register_fn<Fn::kRF>("RF", Band::kMixed, "mixed");
   register_fn<Fn::kRJ>("RJ", Band::kMixed, "mixed");
+}
+
+// The largest distance, in units in the last place of the library's value, between a plain-double
+// variant and the library's function on the mixed set. F is faithful (within 1 ulp of the exact
+// value) and Pi within 2 ulp, so a distance of D ulp means an error of at least D - 1 (F) or
+// D - 2 (Pi) ulp.
+template <Fn fn, Impl impl>
+double max_ulp_distance() {
+  double worst = 0.0;
+  for (const Input& r : inputs(Band::kMixed)) {
+    const double ref = eval<fn, Impl::kOwn>(r), v = eval<fn, impl>(r);
+    const double a = std::fabs(ref);
+    worst = std::max(worst, std::fabs(v - ref) / (std::nextafter(a, 2 * a + 1) - a));
+  }
+  return worst;
 }
 
 // After the console table: the median (or only) values per benchmark and the target check.
@@ -281,6 +350,16 @@ void print_summary(const disklab::bench::Results& rows) {
                                              ? "the double-double kernel"
                                              : "the portable long-double path");
   }
+  if (rows.count("F/mixed/own-double") != 0)
+    std::printf(
+        "F/mixed/own-double (the kernel's algorithm in plain double): up to %.1f ulp from own F "
+        "on the mixed set.\n",
+        max_ulp_distance<Fn::kF, Impl::kOwnDoubleAlg>());
+  if (rows.count("Pi/mixed/own-double-loop") != 0)
+    std::printf(
+        "Pi/mixed/own-double-loop (its loop in plain double): up to %.1f ulp from own Pi on the "
+        "mixed set.\n",
+        max_ulp_distance<Fn::kPi, Impl::kOwnDoubleLoop>());
   const auto avx2 = rows.find("Pi/mixed/own-avx2");
   if (avx2 != rows.end() && dm::detail::pi_dd_kernel() != dm::detail::PiKernel::kAvx2Fma) {
     const double ratio = counter(avx2->second, "ratio_to_boost_double");
