@@ -1,7 +1,8 @@
-// The hash-based Owen scramble (scramble.h): exact nested structure (digit t of the output
-// depends only on digits 1..t of the input, and digit t always follows digit t's flip), an
-// avalanche test (an earlier digit flips each later digit half of the time) and bucket tests
-// (over seeds, a fixed input lands uniformly; two inputs sharing a prefix get independent tails).
+// The hash-based Owen scramble (scramble.h): the paired bit reversal, exact nested structure
+// (digit t of the output depends only on digits 1..t of the input, and digit t always follows
+// digit t's flip), an avalanche test (an earlier digit flips each later digit half of the time) and
+// bucket tests (over seeds, a fixed input lands uniformly; two inputs sharing a prefix get
+// independent tails).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -35,6 +36,20 @@ TEST(Owen, NestedStructureIsExact) {
     // Digits before t unchanged, digit t flipped.
     ASSERT_EQ(diff >> (32 - t), 1u) << "v=" << v << " trial=" << trial << " flipped digit " << t
                                     << ": outputs " << out << " and " << flipped;
+  }
+}
+
+// SobolOwen reverses both coordinates in one 64-bit word (reverse_bits_pair): each must come out
+// as its own 32-bit reversal, in its own place.
+TEST(Owen, PairReversalIsTwoReversals) {
+  Pcg32 rng(77);
+  for (int trial = 0; trial < 100000; ++trial) {
+    const uint32_t x0 = trial < 4 ? (trial & 1 ? ~0u : 0u) : rng.next_u32();
+    const uint32_t y0 = trial < 4 ? (trial & 2 ? ~0u : 1u) : rng.next_u32();
+    uint32_t x = x0, y = y0;
+    reverse_bits_pair(x, y);
+    ASSERT_EQ(x, reverse_bits(x0)) << "x=" << x0 << " y=" << y0;
+    ASSERT_EQ(y, reverse_bits(y0)) << "x=" << x0 << " y=" << y0;
   }
 }
 

@@ -34,6 +34,20 @@ constexpr uint32_t reverse_bits(uint32_t v) {
   return (v >> 16u) | (v << 16u);
 }
 
+// reverse_bits of x and of y in one 64-bit reversal: reversing the word y 2^32 + x gives
+// reverse_bits(x) 2^32 + reverse_bits(y): half the operations of two 32-bit reversals.
+constexpr void reverse_bits_pair(uint32_t& x, uint32_t& y) {
+  uint64_t v = (uint64_t{y} << 32u) | x;
+  v = ((v >> 1u) & 0x5555555555555555ull) | ((v & 0x5555555555555555ull) << 1u);
+  v = ((v >> 2u) & 0x3333333333333333ull) | ((v & 0x3333333333333333ull) << 2u);
+  v = ((v >> 4u) & 0x0f0f0f0f0f0f0f0full) | ((v & 0x0f0f0f0f0f0f0f0full) << 4u);
+  v = ((v >> 8u) & 0x00ff00ff00ff00ffull) | ((v & 0x00ff00ff00ff00ffull) << 8u);
+  v = ((v >> 16u) & 0x0000ffff0000ffffull) | ((v & 0x0000ffff0000ffffull) << 16u);
+  v = (v >> 32u) | (v << 32u);
+  x = static_cast<uint32_t>(v >> 32u);
+  y = static_cast<uint32_t>(v);
+}
+
 // v * 2^-32: exact in double, in [0, 1 - 2^-32].
 constexpr double to_unit(uint32_t v) {
   return v * 0x1p-32;

@@ -105,8 +105,10 @@ class SobolOwen {
       : key_x_(OwenKey::from_seed(derive_seed(seed, 0x50d1))),
         key_y_(OwenKey::from_seed(derive_seed(seed, 0x50d2))) {}
   FixedPoint2 fixed_at(uint32_t index) const {
-    return {reverse_bits(owen_hash_reversed(index, key_x_)),
-            reverse_bits(owen_hash_reversed(sobol_dim1_reversed(index), key_y_))};
+    FixedPoint2 p{owen_hash_reversed(index, key_x_),
+                  owen_hash_reversed(sobol_dim1_reversed(index), key_y_)};
+    reverse_bits_pair(p.x, p.y);
+    return p;
   }
   Point2 at(uint32_t index) const { return to_point(fixed_at(index)); }
 
