@@ -33,6 +33,7 @@
 #include <cstddef>
 #include <limits>
 #include <optional>
+#include <tuple>
 #include <utility>
 
 #include "disklab/ellipse/map_geometry.h"
@@ -491,8 +492,8 @@ struct ProjectedMap {
     double ck = cs, sk = ss, omc = cs >= 0.0 ? ss * ss / (1.0 + cs) : 1.0 - cs;
     // harmonic(j) with g_j carried from one term to the next (one load per term).
     const double kx = n.x() * g.a, ky = n.y() * g.b;
-    double g_lo = 2.0 * series.g0, g_hi = series.g[0];
-    double p = kx * (g_lo + g_hi), q = ky * (g_lo - g_hi);
+    double g_hi = series.g[0];
+    auto [p, q] = harmonic_pq(kx, ky, 2.0 * series.g0, g_hi);
     double v = 0.0, d1 = 0.0, d2 = 0.0, d3 = 0.0, k = 1.0;
     for (int j = 0;; ++j) {
       const double u = p * ck + q * sk;
@@ -501,10 +502,9 @@ struct ProjectedMap {
       d2 += k * (q * ck - p * sk);
       d3 -= k * k * u;
       if (j == last) break;
-      g_lo = g_hi;
+      const double g_lo = g_hi;
       g_hi = series.g[j + 1];
-      p = kx * (g_lo + g_hi);
-      q = ky * (g_lo - g_hi);
+      std::tie(p, q) = harmonic_pq(kx, ky, g_lo, g_hi);
       k += 2.0;
       omc = omc * c2 + two_ss2 + sk * s2;
       const double cn = ck * c2 - sk * s2;
@@ -519,7 +519,11 @@ struct ProjectedMap {
   // g_{j+1}) / 2, each with g_0 / 2 more for j = 0 (g[n] = 0 ends the series).
   std::pair<double, double> harmonic(int j) const {
     const double ga = j == 0 ? 2.0 * series.g0 : series.g[j - 1], gb = series.g[j];
-    return {n.x() * g.a * (ga + gb), n.y() * g.b * (ga - gb)};
+    return harmonic_pq(n.x() * g.a, n.y() * g.b, ga, gb);
+  }
+  // The same from kx = n_x a, ky = n_y b, g_lo = g_j (2 g_0 for j = 0) and g_hi = g_{j+1}.
+  static std::pair<double, double> harmonic_pq(double kx, double ky, double g_lo, double g_hi) {
+    return {kx * (g_lo + g_hi), ky * (g_lo - g_hi)};
   }
   // From x0 = 2 pi u.x, the root of n_z s + h(s) = n_z x0 for the first harmonic h alone, by
   // Lagrange's inversion to third order: s = x0 - r (1 - r1 + r1^2 + r r2 / 2) with r, r1, r2
