@@ -30,8 +30,11 @@ inline constexpr int kGamitoMaxTries = 1024;
 struct GamitoSampler {
   MapGeometry g;
   SphericalRectangle rect;
-  double uniform_pdf = 0.0;   // 1/Omega, density of accepted samples
-  double proposal_pdf = 0.0;  // 1/S, density of candidates
+  double uniform_pdf = 0.0;  // 1/Omega, density of accepted samples
+
+  // 1/S, the density of candidates (a division, not a member: the sampler's size stays that of
+  // the other maps).
+  double proposal_pdf() const { return 1.0 / rect.S; }
 
   static GamitoSampler make(const Disk& disk, const Vec3& o) noexcept {
     GamitoSampler s;
@@ -40,8 +43,7 @@ struct GamitoSampler {
     // The square around the disk in R_d (rectangle.h), from the geometry's scalars: no world
     // coordinates, so its shape does not depend on where the scene sits.
     s.rect = SphericalRectangle::make(s.g.h / s.g.radius, s.g.e / s.g.radius);
-    s.proposal_pdf = 1.0 / s.rect.S;
-    if (!s.rect.valid || !std::isfinite(s.proposal_pdf)) {
+    if (!s.rect.valid() || !std::isfinite(s.proposal_pdf())) {
       s.g.empty = true;
       return s;
     }
@@ -64,7 +66,7 @@ struct GamitoSampler {
     out.direction = unit_vector(X * d.x - Y * d.y + (g.h / g.radius) * d.z);
     // Local direction from the closed-form c - o and the small offset (accurate far away).
     out.local = unit_vector(g.center_local() + g.to_local(pc));
-    out.pdf = proposal_pdf;
+    out.pdf = proposal_pdf();
     out.valid = X * X + dy * dy <= 1.0 && out.direction.squaredNorm() > 0.0;
     return out;
   }
@@ -72,7 +74,7 @@ struct GamitoSampler {
   // Density of a direction as an accepted candidate of propose(): the proposal density inside the
   // disk's solid angle, 0 outside (it integrates to the acceptance rate Omega / S). For
   // sample(u, rng) the density is uniform_pdf inside.
-  double pdf(const Vec3& direction) const { return g.contains(direction) ? proposal_pdf : 0.0; }
+  double pdf(const Vec3& direction) const { return g.contains(direction) ? proposal_pdf() : 0.0; }
 
   // Loops until a candidate is accepted; pdf = 1/Omega. `tries` receives the candidates used.
   EllipseSample sample(Point2 u, sequence::Pcg32& rng, int* tries = nullptr) const {
