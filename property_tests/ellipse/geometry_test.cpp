@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 #include <stdexcept>
 
 #include "disklab/ellipse/geometry.h"
@@ -87,6 +88,28 @@ RC_GTEST_PROP(GeometryFrame, OrthonormalRightHandedAndAlignedWithTheTilt, (uint6
   // z_e lies in the (y_d, z_d) plane, between the disk centre's direction and the normal side.
   RC_ASSERT(std::fabs(se.frame.z.dot(disk_frame.x)) <= kFrameTol);
   RC_ASSERT(se.frame.z.dot(disk_frame.z) > 0.0);
+}
+
+// A point exactly on the axis of a disk whose normal is nearly a coordinate axis (a ceiling
+// light slightly tilted, seen from right below): z_d x (c - o), which gives x_d, is then rounding
+// noise, and may lie almost along z_d. One Gram-Schmidt projection left x_d up to 1.4e-8 off
+// perpendicular here (found by fuzz_geometry); the frames must stay orthonormal to rounding.
+RC_GTEST_PROP(GeometryFrame, OrthonormalOnTheAxisOfANearlyAxisAlignedDisk, (uint64_t seed)) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  const int axis = static_cast<int>(rng() % 3);
+  const double tilt = std::pow(10.0, -12.0 + 11.0 * (U(rng) + 1.0) / 2.0);
+  Vec3 normal(tilt * U(rng), tilt * U(rng), tilt * U(rng));
+  normal[axis] = rng() % 2 ? 1.0 : -1.0;
+  const Vec3 center = rng() % 2 ? Vec3(0, 0, 0) : Vec3(U(rng), U(rng), U(rng));
+  const Disk disk{center, normal, 0.5 + std::fabs(U(rng)), false};
+  const Vec3 o = center + (0.1 + 10.0 * std::fabs(U(rng))) * normal;  // on the lit side
+  const SphericalEllipse se = make_spherical_ellipse(disk, o);
+  RC_ASSERT(!se.empty);
+  RC_LOG() << "normal " << normal.transpose() << " centre " << center.transpose() << "\nR_d "
+           << frame_text(se.disk_frame()) << "\nR_e " << frame_text(se.frame) << "\n";
+  check_frame(se.disk_frame(), "R_d");
+  check_frame(se.frame, "R_e");
 }
 
 RC_GTEST_PROP(GeometryFrame, EllipseCentreRayHitsTheDiskInside, (uint64_t seed)) {

@@ -71,6 +71,15 @@ struct Frame {
       x /= x.cwiseAbs().maxCoeff();
       x /= x.norm();
     }
+    // A hint nearly along z (the cross product that makes it, for a point on a disk's axis, is
+    // rounding noise and may point anywhere) leaves x a z component of up to eps |hint| / |x|
+    // after one projection; a second one, on the unit x, brings it to rounding (Kahan's "twice
+    // is enough", in Parlett's The Symmetric Eigenvalue Problem). Hints at least half
+    // perpendicular to z skip it.
+    if (norm < 0.5 * safe_norm(x_hint)) {
+      x -= x.dot(z) * z;
+      x /= x.norm();
+    }
     Frame f;
     f.z = z;
     f.x = x;
