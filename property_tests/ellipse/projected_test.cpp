@@ -476,6 +476,29 @@ TEST(Projected, DegenerateAndBelowTheHorizonGiveNoSample) {
   EXPECT_FALSE(ellipse::ProjectedMap::make(above, Vec3::Zero(), -Vec3::UnitZ()).valid());
 }
 
+// A disk 1e490 times wider than the point's height above it fills the hemisphere, so u.y = 1
+// lands on the horizon: the direction's cosine came out as the smallest subnormal, positive,
+// and cosine / P underflowed to a valid sample of density 0 (found by fuzz_maps; an estimator
+// would divide by it). Such a sample is no sample, as one exactly on the horizon is; just
+// inside it every sample keeps the contracts (contracts.h: positive pdf, pdf(direction) agrees).
+TEST(Projected, HorizonSampleWhoseDensityUnderflowsIsNoSample) {
+  const ellipse::Disk disk{
+      Vec3(-1.2260560296460538e-59, 2.0703262594797636e-317, 2.070237821729158e-317),
+      Vec3(-3.5376696985814819e+108, 1.8866021494726503e+185, 3.7284217522330064e-138),
+      3.380693404685836e+184, true};
+  const Vec3 o(2.1655808787051005e-47, 9.3451711386140203e-306, 0);
+  const auto m = ellipse::AnyMap::make(ellipse::MapKind::projected, disk, o);
+  ASSERT_TRUE(m.valid());
+  for (double v : {1.0, 1.0 - 0x1p-53, 0.999, 0.5}) {
+    const ellipse::EllipseSample s = m.sample({0.79999999999999882, v});
+    EXPECT_TRUE(!s.valid || s.pdf > 0.0) << "v=" << v << " pdf=" << s.pdf;
+    if (v < 1.0) {
+      ASSERT_TRUE(s.valid) << v;
+    }
+    EXPECT_EQ(ellipse::check_sample(m, s), ellipse::Violation::none) << v;
+  }
+}
+
 // G(r^2) = S(asin r) / r^3, the series the set-up fits (projected_detail::G, g_series): against
 // the same Maclaurin series summed in long double by its term recurrence to 2^-100 (no table,
 // no Horner), on [0, 1/4) where the double code sums the series, and with the degree the set-up

@@ -669,9 +669,10 @@ struct ProjectedMap {
     out.direction = renormalized(g.to_world(local));
     // As pdf(direction) computes it, so the two agree exactly.
     const double cosine = g.to_local(out.direction).dot(n);
-    if (!(cosine > 0.0)) return {};  // on the horizon itself (measure zero)
-    out.point = g.hit(out.direction);
+    // On the horizon itself (measure zero), or so close that cosine / P underflows to 0.
     out.pdf = cosine / P;
+    if (!(out.pdf > 0.0)) return {};
+    out.point = g.hit(out.direction);
     out.valid = true;
     return out;
   }
