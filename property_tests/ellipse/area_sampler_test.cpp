@@ -62,5 +62,38 @@ TEST(AreaSampler, ClosedFormCentreMatchesProjectionNearby) {
   }
 }
 
+// The same where the shape is computed for a raised height (o under the disk or above its rim,
+// closer than kMinShapeHeight radii). For r below ~1e-158 the raised height kMinShapeHeight r
+// is subnormal, and forming it so put the closed form ~1e-11 off the frame (fuzz_maps found an
+// area sample whose direction was that far off, against a cosine of 5e-152). Heights that small
+// survive only in coordinates near 0 along an axis-aligned normal, as here. c - o is nearby
+// (|c - o| <= r), so its projection, in units scaled by a power of two (exact), is accurate to a
+// few ulps of |c - o|.
+TEST(AreaSampler, ClosedFormCentreMatchesProjectionAtRaisedHeightsAndAnyRadius) {
+  int raised_subnormal = 0;
+  for (const int k : {-530, -545, -560, -10, 0, 200}) {
+    const double r = std::ldexp(1.3, k);
+    for (const double tilt : {0.0, 1e-20}) {
+      const Vec3 normal(tilt, 0.0, 1.0);
+      for (const double rho : {0.0, 0.5, 1.0}) {  // the point's offset from the axis, in radii
+        const double t = 1e-152;                  // its height above the disk, in radii
+        const Vec3 o(0.0, rho * r, t * r);
+        const auto area =
+            ellipse::AreaSampler::make(ellipse::Disk{Vec3::Zero(), normal, r, false}, o);
+        ASSERT_TRUE(area.valid()) << k;
+        ASSERT_TRUE(area.g.shape_raised()) << k;
+        if (ellipse::SphericalEllipse::kMinShapeHeight * r < std::numeric_limits<double>::min())
+          ++raised_subnormal;
+        const Vec3 projected = area.g.to_local(std::ldexp(1.0, -k) * (Vec3::Zero() - o));
+        const Vec3 closed = std::ldexp(1.0, -k) * area.center_local;
+        const double tol = 16 * std::numeric_limits<double>::epsilon() * projected.norm();
+        EXPECT_LE((closed - projected).norm(), tol)
+            << "r = 1.3 * 2^" << k << ", tilt " << tilt << ", rho " << rho;
+      }
+    }
+  }
+  EXPECT_EQ(raised_subnormal, 18);  // the scales this test is for were reached
+}
+
 }  // namespace
 }  // namespace disklab::test

@@ -102,26 +102,26 @@ struct SphericalEllipse {
   // exact to a few ulps of each component. Projecting the world vector c - o onto x_e, y_e
   // instead carries an absolute error ~eps |c - o|, i.e. relative ~eps |c - o| / r of the
   // ellipse's size: 1e-8 at 1e8 radii.
-  // The frame comes from the shape at shape_height() (which differs from h only under the disk
-  // or above its rim closer than kMinShapeHeight radii): with h_s = shape_height(),
+  // The frame comes from the shape at a height h_s that differs from h only under the disk or
+  // above its rim closer than kMinShapeHeight radii (shape_raised()):
   // k = h_s (1 + a_t^2), c - o = (0, -e (h_s a_t^2 + (h_s - h)), e^2 + k h) / |(e, k)|.
   // Lengths are first scaled by a power of two near 1/r (exact), so that k cannot overflow for
-  // huge disks seen from close by (a_t^2 ~ 1e300 there).
+  // huge disks seen from close by (a_t^2 ~ 1e300 there), and h_s is formed in those units: as
+  // kMinShapeHeight r it would be subnormal for r below ~1e-158, ~1e-11 off the shape's.
   Vec3 center_local() const {
     if (empty) return Vec3::UnitZ();
     const int p = std::ilogb(radius);
-    const double hs = std::ldexp(shape_height(), -p), hh = std::ldexp(h, -p);
-    const double ee = std::ldexp(e, -p);
+    const double hh = std::ldexp(h, -p), ee = std::ldexp(e, -p);
+    const double hs = shape_raised() ? kMinShapeHeight * std::ldexp(radius, -p) : hh;
     const double k = hs * (1.0 + a_t * a_t), zn = std::hypot(ee, k);
     const Vec3 l(0.0, -(ee / zn) * (hs * (a_t * a_t) + (hs - hh)), (ee / zn) * ee + (k / zn) * hh);
     return {0.0, std::ldexp(l.y(), p), std::ldexp(l.z(), p)};
   }
-  // The height the shape (a, b, the frame) is computed for: h, raised to kMinShapeHeight r
-  // under the disk and above its rim (e <= r), where a smaller one changes Omega by less than
-  // rounding but would overflow a_t^2 or reach subnormal terms (ellipse_shape).
-  double shape_height() const {
-    return e <= radius && h < kMinShapeHeight * radius ? kMinShapeHeight * radius : h;
-  }
+  // Whether the shape (a, b, the frame) is computed for h raised to kMinShapeHeight r: under the
+  // disk and above its rim (e <= r), where a smaller height changes Omega by less than rounding
+  // but would overflow a_t^2 or reach subnormal terms. The same test, in units of r, as
+  // ellipse_shape's.
+  bool shape_raised() const { return e / radius <= 1.0 && h / radius < kMinShapeHeight; }
   static constexpr double kMinShapeHeight = 1e-150;
 };
 
