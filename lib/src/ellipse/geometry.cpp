@@ -68,7 +68,7 @@ EllipseShape ellipse_shape(double h, double e, double r) {
   // the terms that scale like h (1 - a^2, C = a h / r) reach the subnormal range and lose the
   // limit. (For e > r, a_t stays below ~sqrt(r/h) and Omega ~ h: no clamp, it keeps the true
   // scale.)
-  if (e <= r && h < SphericalEllipse::kMinShapeHeight) h = SphericalEllipse::kMinShapeHeight;
+  if (SphericalEllipse::raises_height(h, e)) h = SphericalEllipse::kMinShapeHeight;
   // Cone principal axes (geometry.h): Q = h^2 + e^2 - r^2, S = sqrt(Q^2 + 4 r^2 h^2), K = Q + S.
   const double two_rh = 2.0 * r * h;
   const double Q = std::fma(h, h, (e - r) * (e + r));

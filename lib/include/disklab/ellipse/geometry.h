@@ -119,9 +119,10 @@ struct SphericalEllipse {
   }
   // Whether the shape (a, b, the frame) is computed for h raised to kMinShapeHeight r: under the
   // disk and above its rim (e <= r), where a smaller height changes Omega by less than rounding
-  // but would overflow a_t^2 or reach subnormal terms. The same test, in units of r, as
-  // ellipse_shape's.
-  bool shape_raised() const { return e / radius <= 1.0 && h / radius < kMinShapeHeight; }
+  // but would overflow a_t^2 or reach subnormal terms. ellipse_shape raises it by the same test.
+  bool shape_raised() const { return raises_height(h / radius, e / radius); }
+  // The test, on h and e in units of r.
+  static bool raises_height(double h_r, double e_r) { return e_r <= 1.0 && h_r < kMinShapeHeight; }
   static constexpr double kMinShapeHeight = 1e-150;
 };
 

@@ -60,10 +60,10 @@ struct Frame {
       if (m > 0.0 && std::isfinite(m)) x_hint /= m;
     }
     Vec3 x = x_hint - x_hint.dot(z) * z;
-    const double norm = safe_norm(x);
+    const double norm = safe_norm(x), hint_norm = safe_norm(x_hint);
     // 1e-150 of the hint's length: below it the direction of x is noise; the fallback is then as
     // good as any (callers use this only where the choice of x does not matter, e.g. on axis).
-    if (!(norm > 1e-150 * safe_norm(x_hint)) || !std::isfinite(norm)) return from_z(z);
+    if (!(norm > 1e-150 * hint_norm) || !std::isfinite(norm)) return from_z(z);
     const double n2 = x.squaredNorm();
     if (n2 >= std::numeric_limits<double>::min()) {
       x /= norm;  // the plain form, bit for bit, where the squares are normal
@@ -76,7 +76,7 @@ struct Frame {
     // after one projection; a second one, on the unit x, brings it to rounding (Kahan's "twice
     // is enough", in Parlett's The Symmetric Eigenvalue Problem). Hints at least half
     // perpendicular to z skip it.
-    if (norm < 0.5 * safe_norm(x_hint)) {
+    if (norm < 0.5 * hint_norm) {
       x -= x.dot(z) * z;
       x /= x.norm();
     }
