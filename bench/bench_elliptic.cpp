@@ -159,30 +159,26 @@ __attribute__((target("avx2,fma"), always_inline)) inline void f_double_step(dou
 }
 
 // F as the kernel computes it (elliptic_pi_dd_kernel.inc, f_dd: duplication on the roots c, Delta,
-// 1 of R_F's arguments, two steps and more while their spread exceeds the kernel's tolerance 0.1,
-// then the degree-13 series) with every quantity a plain double and libm's sincos: the
-// kernel's cost without the double-double error terms that make it faithful. Compiled for the
-// kernel's AVX2 + FMA; the series is the kernel's own (one call more than the kernel pays).
-// Registered where the kernel runs. Not a library function: it is not faithful (the summary
-// prints its distance from ellint_f).
+// 1 of R_F's arguments while their spread exceeds the kernel's kFKernelSpread, then the degree-17
+// series) with every quantity a plain double and libm's sincos: the kernel's cost without the
+// double-double error terms that make it faithful. Compiled for the kernel's AVX2 + FMA; the
+// series is the kernel's own (one call more than the kernel pays). Registered where the kernel
+// runs. Not a library function: it is not faithful (the summary prints its distance from
+// ellint_f).
 __attribute__((target("avx2,fma"))) double f_double_alg(double phi, double m) {
   if (phi < 0x1p-26) return phi;
   double s, c;
   ::sincos(phi, &s, &c);
-  double r0 = c, r1 = std::sqrt(std::fma(c, c, (1.0 - m) * s * s)), r2 = 1.0, scale = 4.0;
-  f_double_step(r0, r1, r2);
-  f_double_step(r0, r1, r2);
-  for (;; scale *= 2.0) {
-    const double inv_mu = 3.0 / (r0 + r1 + r2);
-    const double d0 = std::fma(r0, inv_mu, -1.0), d1 = std::fma(r1, inv_mu, -1.0), d01 = d0 + d1;
-    if (std::max(std::fabs(d0), std::max(std::fabs(d1), std::fabs(d01))) <= 0.1) [[likely]] {
-      const double p01 = d0 * d1;
-      const double g =
-          dm::detail::f_dd_series(dm::detail::pi_dd_kernel(), p01 - d01 * d01, -p01 * d01);
-      return s * inv_mu * (1.0 + g) * scale;
-    }
+  double r0 = c, r1 = std::sqrt(std::fma(c, c, (1.0 - m) * s * s)), r2 = 1.0, scale = 1.0;
+  while (3 * (r2 - r0) > dm::detail::kFKernelSpread * (r0 + r1 + r2)) {
     f_double_step(r0, r1, r2);
+    scale *= 2.0;
   }
+  const double inv_mu = 3.0 / (r0 + r1 + r2);
+  const double d0 = std::fma(r0, inv_mu, -1.0), d1 = std::fma(r1, inv_mu, -1.0), d01 = d0 + d1;
+  const double p01 = d0 * d1;
+  const double g = dm::detail::f_dd_series(dm::detail::pi_dd_kernel(), p01 - d01 * d01, -p01 * d01);
+  return s * inv_mu * (1.0 + g) * scale;
 }
 
 template <Fn fn, Impl impl>

@@ -538,21 +538,22 @@ TEST(EllipticReference, FKernelCopiesAndPortablePathFaithfulOnBothTables) {
 
 // The series of F's kernel: R_F(r_1^2, r_2^2, r_3^2) = (1 + G(e2, e3)) / mu for roots
 // r_j = mu (1 + d_j), sum d_j = 0, against 50-digit R_F at mu = 1 and |d_j| up to the kernel's
-// tolerance 0.1. Bound: the truncation beyond degree 13 is below 2^-63 there and the double
-// evaluation of |G| < 8e-4 rounds a few times at 2^-53 relative: 2^-59 absolute. A wrong
-// coefficient of degree up to about 10 exceeds it at |d| = 0.1 (its term is 1e-10 to 1e-17).
+// tolerance (0.2). Bound: the kernel's error budget for the series, truncation beyond degree 17
+// below 2^-62.8 and the double evaluation of |G| < 0.0027 below 2^-58. A wrong coefficient of
+// degree up to 14 exceeds it at |d| = 0.2 (its term is 1e-10 to 1e-17 there).
 TEST(EllipticReference, FKernelSeriesAgainst50Digits) {
   namespace d = math::detail;
   const auto kernels = supported_kernels();
   if (kernels.empty()) GTEST_SKIP() << "this CPU lacks AVX2/FMA: F's kernel is not used";
-  const double kBound = std::ldexp(1.0, -59);
+  const double kBound = std::ldexp(1.0, -58) + std::exp2(-62.8);
+  const double tol = d::kFKernelSeriesRange;
   sequence::Pcg32 rng(2026, 16);
   double worst = 0;
   for (int i = 0; i < 2000; ++i) {
-    // d on the boundary of |d_j| <= 0.1 for half of the samples (the largest terms).
-    const double scale = i % 2 == 0 ? 0.1 : 0.1 * rng.next_double();
+    // d on the boundary of |d_j| <= tol for half of the samples (the largest terms).
+    const double scale = i % 2 == 0 ? tol : tol * rng.next_double();
     const double d0 = scale * (2 * rng.next_double() - 1), d1 = scale * (2 * rng.next_double() - 1);
-    if (std::fabs(d0 + d1) > 0.1) continue;  // |d_2| within the tolerance too
+    if (std::fabs(d0 + d1) > tol) continue;  // |d_2| within the tolerance too
     const Real50 D0(d0), D1(d1), D2 = -(D0 + D1);
     const Real50 g_exact =
         math::carlson_rf((1 + D0) * (1 + D0), (1 + D1) * (1 + D1), (1 + D2) * (1 + D2)) - 1;
@@ -566,8 +567,65 @@ TEST(EllipticReference, FKernelSeriesAgainst50Digits) {
       EXPECT_LE(err, kBound) << d::pi_dd_kernel_name(k) << " d0=" << d0 << " d1=" << d1;
     }
   }
-  std::printf("F kernel series vs 50 digits at |d| <= 0.1: max error %.2g (bound 2^-59 = %.2g)\n",
+  std::printf("F kernel series vs 50 digits at |d| <= %.2g: max error %.2g (bound %.2g)\n", tol,
               worst, kBound);
+}
+
+// F's kernel takes its series after 0, 1, 2 or more duplication steps, as the roots' spread
+// allows (f_converged in the kernel). The series' error is largest where the spread only just
+// passes, with |d_j| near the tolerance: faithful there, on both sides of every change of the
+// step count, against 50-digit F. The changes are found by bisection on phi of the kernel's
+// spread test evaluated in double, for m from 0 to 1 - 1e-12 (the test's roots differ from the
+// kernel's by roundings, so each change is probed a few ulps to either side).
+TEST(EllipticReference, FKernelFaithfulWhereItsStepCountChanges) {
+  namespace d = math::detail;
+  const auto kernels = supported_kernels();
+  if (kernels.empty()) GTEST_SKIP() << "this CPU lacks AVX2/FMA: F's kernel is not used";
+  const double tol = d::kFKernelSpread;
+  auto steps = [tol](double phi, double m) {
+    const double s = std::sin(phi), c = std::cos(phi);
+    double r0 = c, r1 = std::sqrt(c * c + (1 - m) * s * s), r2 = 1.0;
+    int k = 0;
+    while (3 * (r2 - r0) > tol * (r0 + r1 + r2)) {
+      const double a = std::sqrt((r0 + r1) * (r0 + r2)), b = std::sqrt((r1 + r0) * (r1 + r2));
+      r2 = std::sqrt((r2 + r0) * (r2 + r1));
+      r0 = a;
+      r1 = b;
+      ++k;
+    }
+    return k;
+  };
+  std::array<int, 4> probed{};  // probes by step count: 0, 1, 2, 3 or more
+  for (const double m :
+       {0.0, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99, 1 - 1e-3, 1 - 1e-6, 1 - 1e-9, 1 - 1e-12, 1.0}) {
+    for (int k = 1; k <= 4 && steps(elliptic_domain::kHalfPi, m) >= k; ++k) {
+      double lo = 0x1p-20, hi = elliptic_domain::kHalfPi;  // steps(lo, m) = 0 < k <= steps(hi, m)
+      for (int it = 0; it < 80 && std::nextafter(lo, hi) < hi; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (steps(mid, m) < k ? lo : hi) = mid;
+      }
+      double phi = lo;
+      for (int j = 0; j < 3; ++j)
+        phi = std::nextafter(phi, 0.0);
+      for (int j = 0; j < 8 && phi <= elliptic_domain::kHalfPi;
+           ++j, phi = std::nextafter(phi, 4.0)) {
+        ++probed[std::min(steps(phi, m), 3)];
+        const Real50 exact = math::ellint_f(Real50(phi), Real50(m));
+        for (const d::PiKernel kernel : kernels) {
+          const double own = d::ellint_f_dd(kernel, phi, m);
+          const RoundingError e = rounding_error(own, exact);
+          EXPECT_TRUE(e.faithful) << d::pi_dd_kernel_name(kernel) << " phi=" << phi << " m=" << m
+                                  << " own=" << own << " exact=" << exact;
+        }
+      }
+    }
+  }
+  std::printf(
+      "F kernel at its step-count changes: %d / %d / %d / %d probes after 0 / 1 / 2 / 3+ "
+      "steps\n",
+      probed[0], probed[1], probed[2], probed[3]);
+  for (int k = 0; k < 4; ++k)
+    EXPECT_GT(probed[k], 0) << "no probe after " << k << " steps";
 }
 
 TEST(EllipticReference, MissingTableFailsLoudly) {

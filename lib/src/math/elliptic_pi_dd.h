@@ -33,6 +33,11 @@ double ellint_f_dd(PiKernel kernel, double phi, double m, double one_minus_m,
                    double one_minus_m_lo) noexcept;
 double ellint_f_dd(PiKernel kernel, double phi, double m) noexcept;
 double f_dd_series(PiKernel kernel, double e2, double e3) noexcept;
+// F's kernel takes its series once the spread of the roots, (max - min) / mean, is at most
+// kFKernelSpread; their deviations d_j from the mean (sum 0) are then at most 2/3 of it, the
+// series' range kFKernelSeriesRange.
+inline constexpr double kFKernelSpread = 0.3;
+inline constexpr double kFKernelSeriesRange = 2 * kFKernelSpread / 3;
 // The kernel's double-double elementary functions in the given copy, exported for their
 // accuracy tests (results as {hi, lo} pairs; NaN where the copy is not supported): sin and cos
 // of phi in [0, pi/2], atan of x >= 0, log of x >= 1, and R_C(1, 1 + e) - 1 for
