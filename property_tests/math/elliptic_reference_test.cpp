@@ -173,6 +173,20 @@ double kernel_pi(math::detail::PiKernel kernel, double n, double phi, double m) 
                                     omm, math::detail::complement_error(m, omm));
 }
 
+// The Pi table's inputs (n, phi, m) in the kernel's domain (phi in (0, pi/2], m in [0, 1], n < 1):
+// the kernel and the portable path are both within 1 ulp there but round differently on some
+// rows, which is how the dispatch tests below tell them apart (on random inputs they now agree
+// on all but ~0.2%).
+std::vector<std::array<double, 3>> pi_table_kernel_inputs() {
+  std::vector<std::array<double, 3>> out;
+  for (const EllipticRow& row : read_elliptic_table("elliptic_pi.csv", 3)) {
+    const double n = row.inputs[0], phi = row.inputs[1], m = row.inputs[2];
+    if (phi > 0 && phi <= elliptic_domain::kHalfPi && m >= 0 && m <= 1 && n < 1)
+      out.push_back({n, phi, m});
+  }
+  return out;
+}
+
 template <class Eval>
 UlpStats check_pi_path(const char* label, Eval eval) {
   const auto rows = read_elliptic_table("elliptic_pi.csv", 3);
@@ -241,7 +255,7 @@ TEST(EllipticReference, PiRunsTheBestSupportedKernel) {
   EXPECT_EQ(d::pi_dd_kernel_supported(d::PiKernel::kAvx512), best == d::PiKernel::kAvx512);
   std::printf("Pi kernel in use: %s\n", d::pi_dd_kernel_name(best));
   // ellint_pi's result is the kernel's, bit for bit. The portable path's differs in the last bit
-  // on some of these inputs (counted), so this shows that the kernel runs; which copy runs is
+  // on some of the table's inputs (counted), so this shows that the kernel runs; which copy runs is
   // pi_dd_kernel()'s answer above (the copies rarely differ: the corner sweep below counts it).
   sequence::Pcg32 rng(2026, 6);
   int portable_differs = 0;
@@ -267,15 +281,24 @@ TEST(EllipticReference, PiRunsTheBestSupportedKernel) {
       portable_differs += own != d::ellint_pi_portable(n, 1.0 - n, phi, m, 1.0 - m);
     }
   }
+  const auto table = pi_table_kernel_inputs();
   if (best != d::PiKernel::kNone) {
+    for (const auto& [n, phi, m] : table) {
+      const double own = math::ellint_pi(n, phi, m);
+      EXPECT_EQ(std::bit_cast<uint64_t>(own), std::bit_cast<uint64_t>(kernel_pi(best, n, phi, m)))
+          << "n=" << n << " phi=" << phi << " m=" << m;
+      portable_differs += own != d::ellint_pi_portable(n, 1.0 - n, phi, m, 1.0 - m);
+    }
     EXPECT_GT(portable_differs, 0);
   }
-  std::printf("the portable path differs from the kernel on %d of 200 inputs\n", portable_differs);
+  std::printf("the portable path differs from the kernel on %d of %zu inputs\n", portable_differs,
+              200 + table.size());
 }
 
 // use_pi_dd_kernel, the benchmark's way to time a copy that is not the best: ellint_pi then runs
 // the chosen copy or, for kNone, the portable path (which differs from the kernel in the last bit
-// on some inputs, so the bitwise checks tell them apart); unsupported copies are refused.
+// on some of the table's inputs, so the bitwise checks tell them apart); unsupported copies are
+// refused.
 TEST(EllipticReference, PiKernelCanBeChosen) {
   namespace d = math::detail;
   const d::PiKernel before = d::pi_dd_kernel();
@@ -290,6 +313,8 @@ TEST(EllipticReference, PiKernelCanBeChosen) {
   std::vector<std::array<double, 3>> inputs(300);
   for (auto& in : inputs)
     in = {2 * rng.next_double() - 1, 1.5 * rng.next_double() + 0.05, rng.next_double()};
+  const auto table = pi_table_kernel_inputs();
+  inputs.insert(inputs.end(), table.begin(), table.end());
   for (const d::PiKernel k : kKernelCopies) {
     if (!d::pi_dd_kernel_supported(k)) {
       EXPECT_FALSE(d::use_pi_dd_kernel(k)) << d::pi_dd_kernel_name(k);
@@ -385,8 +410,10 @@ TEST(EllipticReference, PiAndFWithinTwoUlpOf50DigitsAtCorners) {
 // Their error enters Pi once, scaled by at most ~1 (no cancellation between Pi's terms), so each
 // must stay well under a correctly rounded double's 2^-53. Bounds from their error analysis (the
 // measured maxima are printed): atan, log and R_C carry only first-order corrections and series
-// tails below 2^-58, so 2^-55; sin and cos round their Taylor correction (at most 0.103 of the
-// value at |t| = pi/4) three times, 0.31 * 2^-53 < 2^-54.
+// tails below 2^-58, so 2^-55; sin and cos come from a table of double-doubles and Taylor
+// terms through t^7 at |t| <= pi/256 (omitted terms below 2^-66), rounding in double only what is
+// below 7.5e-5 of the value: 2^-64, checked at 2^-62 (a factor 4 for the roundings not counted),
+// at random phi and at the table's nodes j pi/128 and midpoints, where |t| is largest.
 TEST(EllipticReference, KernelElementaryFunctionsWithin2em55Of50Digits) {
   const auto kernels = supported_kernels();
   if (kernels.empty())
@@ -394,7 +421,7 @@ TEST(EllipticReference, KernelElementaryFunctionsWithin2em55Of50Digits) {
   namespace dom = elliptic_domain;
   namespace d = math::detail;
   using DDv = d::DoubleDouble;
-  const Real50 kBound = Real50(std::ldexp(1.0, -55)), kSinCosBound = Real50(std::ldexp(1.0, -54));
+  const Real50 kBound = Real50(std::ldexp(1.0, -55)), kSinCosBound = Real50(std::ldexp(1.0, -62));
   auto value = [](DDv x) { return Real50(x.hi) + Real50(x.lo); };
   auto rel = [](const Real50& got, const Real50& ref) { return Real50(abs((got - ref) / ref)); };
   sequence::Pcg32 rng(2026, 5);
@@ -436,9 +463,19 @@ TEST(EllipticReference, KernelElementaryFunctionsWithin2em55Of50Digits) {
       EXPECT_LE(er, kBound) << name << " R_C e=" << e;
     }
   }
+  for (int j = 0; j <= 128; ++j) {  // nodes (even j) and midpoints (odd j) of the sincos table
+    const double phi = std::max(1e-300, j * (std::numbers::pi / 256));
+    for (const d::PiKernel k : kernels) {
+      DDv s, c;
+      d::pi_dd_sincos(k, phi, s, c);
+      const Real50 es = rel(value(s), sin(Real50(phi))), ec = rel(value(c), cos(Real50(phi)));
+      worst_sc = std::max(worst_sc, std::max(es, ec));
+      EXPECT_LE(std::max(es, ec), kSinCosBound) << d::pi_dd_kernel_name(k) << " sincos phi=" << phi;
+    }
+  }
   std::printf(
       "kernel functions (%zu copies), max relative error: sincos %.2g, atan %.2g, log %.2g, "
-      "R_C %.2g (bounds 2^-54, 2^-55 = %.2g)\n",
+      "R_C %.2g (bounds 2^-62, 2^-55 = %.2g)\n",
       kernels.size(), double(worst_sc), double(worst_atan), double(worst_log), double(worst_rc),
       std::ldexp(1.0, -55));
 }
