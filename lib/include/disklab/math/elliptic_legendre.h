@@ -51,7 +51,7 @@
 // FAST PATH (F and Pi in double only). F: on the same CPUs as Pi's kernel below, ellint_f<double>
 // with m in [0, 1] and 0 < |phi| <= pi/2 runs a double-double duplication on the square roots of
 // R_F's arguments, as many steps as their spread needs (often none), with a degree-17 series in
-// them (lib/src/math/elliptic_pi_dd_kernel.inc, with its error bound: below 2^-55.6 relative
+// them (lib/src/math/elliptic_pi_dd_kernel.inc, with its error bound: below 2^-57.2 relative
 // before the one rounding, so faithfully rounded); phi beyond
 // pi/2 and m < 0 take the portable path. Speed: bench_elliptic, F/mixed/own vs own-portable.
 // Pi: on x86-64 CPUs with AVX2 and FMA (checked once at run time;
