@@ -30,7 +30,10 @@
 // copy as Pi's) where the CPU runs it; F/mixed/own-portable always times the long-double path.
 // F/mixed/own-double times the kernel's algorithm without its error terms (see f_double_alg):
 // what faithful rounding costs in speed. The summary prints how far both plain-double variants
-// land from the library's values on the mixed set.
+// land from the library's values on the mixed set. Where F's time goes: F/mixed/own-chained
+// feeds each result into the next input (one evaluation's latency against Boost's, not the
+// throughput of independent calls), and F/steps0, F/steps1, F/steps2+ time F on inputs drawn like
+// the mixed set's but kept by the kernel's number of duplication steps (0, 1, 2 or more).
 //
 // The summary after the table repeats the median ratios and checks the issues' targets:
 // own Pi <= 0.4x the time of boost::math::ellint_3 with promote_double<false> (issue 4), and
@@ -53,6 +56,7 @@
 #include <numbers>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bench_common.h"
@@ -75,18 +79,25 @@ struct Input {
   double x, y, z, p;    // the Carlson arguments Pi evaluates
 };
 
-enum class Band { kMixed, kPositive, kNegativeSmall, kNegativeLarge };
+// kFSteps0/1/2: F's inputs drawn like the mixed set's (phi, m), kept where the kernel takes 0, 1,
+// or 2 and more duplication steps (f_kernel_steps).
+enum class Band { kMixed, kPositive, kNegativeSmall, kNegativeLarge, kFSteps0, kFSteps1, kFSteps2 };
+
+int f_kernel_steps(double phi, double m);
 
 std::vector<Input> make_inputs(Band band) {
   disklab::sequence::Pcg32 rng(1, static_cast<uint64_t>(band) + 11);
+  const bool by_steps = band >= Band::kFSteps0;
+  const int steps = static_cast<int>(band) - static_cast<int>(Band::kFSteps0);
   std::vector<Input> in(kInputs);
-  for (int i = 0; i < kInputs; ++i) {
+  for (int i = 0, drawn = 0; i < kInputs; ++drawn) {
     Input& r = in[i];
     // m: three quarters uniform in [0, 1), one quarter 1 - 10^-(3..12) (near the singular end).
-    r.m = (i % 4 == 3) ? 1.0 - std::pow(10.0, -3.0 - 9.0 * rng.next_double()) : rng.next_double();
+    r.m =
+        (drawn % 4 == 3) ? 1.0 - std::pow(10.0, -3.0 - 9.0 * rng.next_double()) : rng.next_double();
     r.k = std::sqrt(r.m);
     r.phi = rng.next_double() * (std::numbers::pi / 2);
-    const int b = band == Band::kMixed ? i % 3 : static_cast<int>(band) - 1;
+    const int b = band == Band::kMixed || by_steps ? i % 3 : static_cast<int>(band) - 1;
     const double u = rng.next_double();
     if (b == 0)
       r.n = u;  // (0, 1) (u = 0 has probability 2^-32)
@@ -100,14 +111,17 @@ std::vector<Input> make_inputs(Band band) {
     r.z = 1.0;
     r.p = r.n > 0 ? 1.0 - r.n * s * s : 1.0 - (r.m - r.n) / (1.0 - r.n) * s * s;
     if (!(r.p > 0)) r.p = 1e-300;  // never: n < 1 and N < 1 keep p > 0
+    if (!by_steps || std::min(f_kernel_steps(r.phi, r.m), 2) == steps) ++i;
   }
   return in;
 }
 
 const std::vector<Input>& inputs(Band band) {
-  static const std::array<std::vector<Input>, 4> sets{
-      make_inputs(Band::kMixed), make_inputs(Band::kPositive), make_inputs(Band::kNegativeSmall),
-      make_inputs(Band::kNegativeLarge)};
+  static const std::array<std::vector<Input>, 7> sets{
+      make_inputs(Band::kMixed),         make_inputs(Band::kPositive),
+      make_inputs(Band::kNegativeSmall), make_inputs(Band::kNegativeLarge),
+      make_inputs(Band::kFSteps0),       make_inputs(Band::kFSteps1),
+      make_inputs(Band::kFSteps2)};
   return sets[static_cast<int>(band)];
 }
 
@@ -181,6 +195,23 @@ __attribute__((target("avx2,fma"))) double f_double_alg(double phi, double m) {
   return s * inv_mu * (1.0 + g) * scale;
 }
 
+// The kernel's number of duplication steps for F(phi|m) (f_dd in elliptic_pi_dd_kernel.inc), by its
+// rule in plain double: it may differ from the kernel's count where the spread lies within a few
+// roundings of kFKernelSpread. For sorting inputs into the timed step classes only.
+int f_kernel_steps(double phi, double m) {
+  if (phi < 0x1p-26) return 0;
+  const double s = std::sin(phi), c = std::cos(phi);
+  double r0 = c, r1 = std::sqrt(c * c + (1.0 - m) * s * s), r2 = 1.0;
+  int k = 0;
+  for (; 3 * (r2 - r0) > dm::detail::kFKernelSpread * (r0 + r1 + r2); ++k) {
+    const double s01 = r0 + r1, s12 = r1 + r2, s02 = r0 + r2;
+    r0 = std::sqrt(s01 * s02);
+    r1 = std::sqrt(s01 * s12);
+    r2 = std::sqrt(s02 * s12);
+  }
+  return k;
+}
+
 template <Fn fn, Impl impl>
 inline double eval(const Input& r) {
   if constexpr (fn == Fn::kF) {
@@ -213,10 +244,22 @@ inline double eval(const Input& r) {
   }
 }
 
-template <Fn fn, Impl impl>
+// One pass over the set. Chained: each evaluation's phi depends on the previous result (phi + 0 *
+// result, which IEEE arithmetic cannot fold away), so evaluations cannot overlap: the time is one
+// evaluation's latency, not the throughput of independent ones.
+template <Fn fn, Impl impl, bool chained = false>
 inline void pass(const std::vector<Input>& in) {
-  for (const Input& r : in)
-    benchmark::DoNotOptimize(eval<fn, impl>(r));
+  if constexpr (chained) {
+    double previous = 0.0;
+    for (Input r : in) {
+      r.phi += 0.0 * previous;
+      previous = eval<fn, impl>(r);
+    }
+    benchmark::DoNotOptimize(previous);
+  } else {
+    for (const Input& r : in)
+      benchmark::DoNotOptimize(eval<fn, impl>(r));
+  }
 }
 
 // For Pi/mixed/own-avx2: ellint_pi runs the kernel's AVX2+FMA copy while this lives.
@@ -228,7 +271,7 @@ struct UseAvx2Copy {
   UseAvx2Copy& operator=(const UseAvx2Copy&) = delete;
 };
 
-template <Fn fn, Impl impl>
+template <Fn fn, Impl impl, bool chained = false>
 void BM_Elliptic(benchmark::State& state, Band band) {
   std::optional<UseAvx2Copy> avx2_copy;
   if constexpr (impl == Impl::kOwnAvx2) avx2_copy.emplace();
@@ -236,9 +279,9 @@ void BM_Elliptic(benchmark::State& state, Band band) {
   double t_impl = 0.0, t_base = 0.0;
   for (auto _ : state) {
     const auto t0 = Clock::now();
-    pass<fn, impl>(in);
+    pass<fn, impl, chained>(in);
     const auto t1 = Clock::now();
-    pass<fn, Impl::kBoostDouble>(in);
+    pass<fn, Impl::kBoostDouble, chained>(in);
     const auto t2 = Clock::now();
     t_impl += seconds(t0, t1);
     t_base += seconds(t1, t2);
@@ -276,6 +319,17 @@ void register_benchmarks() {
   if (dm::detail::pi_dd_kernel_available())
     benchmark::RegisterBenchmark("F/mixed/own-double", BM_Elliptic<Fn::kF, Impl::kOwnDoubleAlg>,
                                  Band::kMixed)
+        ->UseManualTime()
+        ->Unit(benchmark::kMicrosecond);
+  // Where F's time goes: one evaluation's latency, and the cost by the kernel's step count.
+  benchmark::RegisterBenchmark("F/mixed/own-chained", BM_Elliptic<Fn::kF, Impl::kOwn, true>,
+                               Band::kMixed)
+      ->UseManualTime()
+      ->Unit(benchmark::kMicrosecond);
+  for (const auto& [band, name] :
+       {std::pair{Band::kFSteps0, "F/steps0/own"}, std::pair{Band::kFSteps1, "F/steps1/own"},
+        std::pair{Band::kFSteps2, "F/steps2+/own"}})
+    benchmark::RegisterBenchmark(name, BM_Elliptic<Fn::kF, Impl::kOwn>, band)
         ->UseManualTime()
         ->Unit(benchmark::kMicrosecond);
   register_fn<Fn::kPi>("Pi", Band::kMixed, "mixed");
@@ -346,6 +400,37 @@ void print_summary(const disklab::bench::Results& rows) {
                                              ? "the double-double kernel"
                                              : "the portable long-double path");
   }
+  if (rows.count("F/steps0/own") != 0) {
+    std::array<int, 3> count{};
+    double steps = 0.0;
+    for (const Input& r : inputs(Band::kMixed)) {
+      const int k = f_kernel_steps(r.phi, r.m);
+      ++count[std::min(k, 2)];
+      steps += k;
+    }
+    std::printf(
+        "F by the kernel's duplication steps (inputs drawn like the mixed set's; share of the "
+        "mixed "
+        "set, %.2f steps on average):\n",
+        steps / kInputs);
+    const char* names[3] = {"F/steps0/own", "F/steps1/own", "F/steps2+/own"};
+    for (int k = 0; k < 3; ++k) {
+      const auto row = rows.find(names[k]);
+      if (row == rows.end()) continue;
+      std::printf(
+          "  %-14s %5.1f%% of the mixed set: %5.1f ns, Boost %5.1f ns on the same inputs (%.3fx)\n",
+          names[k], 100.0 * count[k] / kInputs, counter(row->second, "ns"),
+          counter(row->second, "boost_double_ns"), counter(row->second, "ratio_to_boost_double"));
+    }
+  }
+  const auto chained = rows.find("F/mixed/own-chained");
+  if (chained != rows.end() && f_own != rows.end())
+    std::printf(
+        "F's latency (F/mixed/own-chained: each input waits for the previous result): %.1f ns, "
+        "Boost %.1f ns; independent inputs overlap to %.1f ns (%.0f%% of the latency).\n",
+        counter(chained->second, "ns"), counter(chained->second, "boost_double_ns"),
+        counter(f_own->second, "ns"),
+        100.0 * counter(f_own->second, "ns") / counter(chained->second, "ns"));
   if (rows.count("F/mixed/own-double") != 0)
     std::printf(
         "F/mixed/own-double (the kernel's algorithm in plain double): up to %.1f ulp from own F "
