@@ -1,0 +1,183 @@
+// The piecewise polynomials of the complete elliptic integral K(m) that F's kernel uses for its
+// complement path (lib/src/math/elliptic_pi_dd_kernel.inc, F(phi|m) = K(m) - F(psi|m)), written
+// as C++ to lib/src/math/elliptic_k_table.inc.
+//
+// Pieces: x = 1 - m in [1/16, 1] (m in [0, 15/16]), four pieces per binade of x,
+//   piece i = 4 (E + 4) + p for x in [2^E (1 + p/4), 2^E (1 + (p+1)/4)], E = -4..-1, p = 0..3
+// (x = 1 falls in the last piece), each with centre x_c and half-width h = 2^E / 8. On a piece
+// K = sum_{n=0}^{16} a_n y^n with y = x - x_c: the polynomial interpolating K at the 17
+// Chebyshev points of the piece, in 50 digits. K's only finite singularity is at x = 0, at least
+// 9 half-widths from every centre, so the interpolant converges like 17.9^-n (Chebyshev's
+// bound for a function analytic inside the Bernstein ellipse through x = 0); the generator
+// checks every piece on 2000 points: the polynomial with its coefficients rounded to double
+// (a_0 and a_1 as double-doubles: a_1 y reaches 1/50 of K) within kMaxRelative of K.
+//
+// K in 50 digits by the arithmetic-geometric mean, K = pi / (2 AGM(1, sqrt(x))) (DLMF 19.8.5),
+// independent of the Carlson code under test; the test EllipticReference.FComplementK* checks
+// the kernel's K against Boost's ellint_1 in 50 digits too.
+//
+// Usage:
+//   reference_elliptic_k_table --out lib/src/math/elliptic_k_table.inc
+//   reference_elliptic_k_table --check lib/src/math/elliptic_k_table.inc   (regenerates and
+//                                                  compares the whole file; exit 1 on a difference)
+#include <boost/math/constants/constants.hpp>
+#include <boost/multiprecision/cpp_bin_float.hpp>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using Real = boost::multiprecision::cpp_bin_float_50;
+
+constexpr int kPieces = 16;
+constexpr int kDegree = 16;
+// Every piece's polynomial, as the kernel evaluates it (coefficients rounded), against K: far
+// below the 2^-57 the kernel's error budget gives K (its comment, at f_complement).
+const Real kMaxRelative = Real(std::ldexp(1.0, -62));
+
+Real k_agm(const Real& x) {  // K(1 - x), x in (0, 1]
+  Real a = 1, b = sqrt(x);
+  for (int i = 0; i < 40 && abs(a - b) > a * Real("1e-55"); ++i) {
+    const Real an = (a + b) / 2;
+    b = sqrt(a * b);
+    a = an;
+  }
+  return boost::math::constants::pi<Real>() / (2 * a);
+}
+
+struct Piece {
+  double centre, half_width;
+  double a0_hi, a0_lo, a1_hi, a1_lo;
+  std::vector<double> a;  // a_2 .. a_kDegree
+  double max_relative;    // of the rounded polynomial against K, on 2000 points
+};
+
+Piece make_piece(int i) {
+  const int E = i / 4 - 4, p = i % 4;
+  const Real scale = ldexp(Real(1), E);
+  const Real lo = scale * (1 + Real(p) / 4), hi = scale * (1 + Real(p + 1) / 4);
+  const Real xc = (lo + hi) / 2, h = (hi - lo) / 2;
+  // Interpolate at the Chebyshev points y_j = h cos((2j+1) pi / (2(n+1))): solve the
+  // Vandermonde system in 50 digits (Gaussian elimination with partial pivoting).
+  const int n = kDegree + 1;
+  std::vector<std::vector<Real>> M(n, std::vector<Real>(n + 1));
+  const Real pi = boost::math::constants::pi<Real>();
+  for (int j = 0; j < n; ++j) {
+    const Real y = h * cos((2 * j + 1) * pi / (2 * n));
+    Real pw = 1;
+    for (int k = 0; k < n; ++k, pw *= y)
+      M[j][k] = pw;
+    M[j][n] = k_agm(xc + y);
+  }
+  for (int c = 0; c < n; ++c) {
+    int piv = c;
+    for (int r = c + 1; r < n; ++r)
+      if (abs(M[r][c]) > abs(M[piv][c])) piv = r;
+    std::swap(M[c], M[piv]);
+    for (int r = 0; r < n; ++r) {
+      if (r == c) continue;
+      const Real f = M[r][c] / M[c][c];
+      for (int k = c; k <= n; ++k)
+        M[r][k] -= f * M[c][k];
+    }
+  }
+  std::vector<Real> coef(n);
+  for (int k = 0; k < n; ++k)
+    coef[k] = M[k][n] / M[k][k];
+  Piece out;
+  out.centre = static_cast<double>(xc);  // a dyadic rational: exact
+  out.half_width = static_cast<double>(h);
+  out.a0_hi = static_cast<double>(coef[0]);
+  out.a0_lo = static_cast<double>(coef[0] - Real(out.a0_hi));
+  out.a1_hi = static_cast<double>(coef[1]);
+  out.a1_lo = static_cast<double>(coef[1] - Real(out.a1_hi));
+  for (int k = 2; k < n; ++k)
+    out.a.push_back(static_cast<double>(coef[k]));
+  // The rounded polynomial, evaluated exactly, against K on the closed piece.
+  Real worst = 0;
+  for (int j = 0; j <= 2000; ++j) {
+    const Real y = -h + 2 * h * j / 2000;
+    Real poly = 0;
+    for (int k = kDegree; k >= 2; --k)
+      poly = (poly + Real(out.a[k - 2])) * y;
+    poly = (poly + Real(out.a1_hi) + Real(out.a1_lo)) * y + Real(out.a0_hi) + Real(out.a0_lo);
+    const Real exact = k_agm(xc + y);
+    worst = std::max(worst, abs(poly - exact) / exact);
+  }
+  out.max_relative = static_cast<double>(worst);
+  return out;
+}
+
+std::string hex(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%a", v);
+  return buf;
+}
+
+std::string render() {
+  std::ostringstream s;
+  s << "// Generated by reference/generate/elliptic_k_table.cpp (reference_elliptic_k_table --out\n"
+       "// lib/src/math/elliptic_k_table.inc); regenerate on purpose, never edit. K(m) on\n"
+       "// x = 1 - m in [1/16, 1]: piece i = 4 (E + 4) + p covers x in [2^E (1 + p/4),\n"
+       "// 2^E (1 + (p+1)/4)], E = -4..-1, p = 0..3, and K = sum_{n=0}^{16} a_n y^n with\n"
+       "// y = x - centre, a_0 and a_1 as double-doubles. Row: centre, a0_hi, a0_lo, a1_hi,\n"
+       "// a1_lo, a_2 .. a_16.\n"
+       "// Interpolation at 17 Chebyshev points of K by the AGM in 50 digits; each rounded\n"
+       "// polynomial within 2^-62 of K (measured worst per piece above its row).\n";
+  s << "// clang-format off\n";
+  s << "constexpr int kKPieces = " << kPieces << ", kKDegree = " << kDegree << ";\n";
+  s << "constexpr double kKTable[kKPieces][kKDegree + 4] = {\n";
+  for (int i = 0; i < kPieces; ++i) {
+    const Piece p = make_piece(i);
+    if (!(Real(p.max_relative) <= kMaxRelative)) {
+      std::fprintf(stderr, "piece %d: relative error %.3g above 2^-62\n", i, p.max_relative);
+      std::exit(1);
+    }
+    char head[64];
+    std::snprintf(head, sizeof head, "    // piece %d, worst %.2g\n", i, p.max_relative);
+    s << head << "    {" << hex(p.centre) << ", " << hex(p.a0_hi) << ", " << hex(p.a0_lo)
+      << ",\n     " << hex(p.a1_hi) << ", " << hex(p.a1_lo);
+    for (std::size_t k = 0; k < p.a.size(); ++k)
+      s << (k % 4 == 0 ? ",\n     " : ", ") << hex(p.a[k]);
+    s << "},\n";
+  }
+  s << "};\n// clang-format on\n";
+  return s.str();
+}
+
+[[noreturn]] void usage(const char* why) {
+  std::fprintf(stderr,
+               "%s\nusage: reference_elliptic_k_table --out FILE\n"
+               "       reference_elliptic_k_table --check FILE\n",
+               why);
+  std::exit(2);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 3) usage("give one of --out FILE and --check FILE");
+  const std::string mode = argv[1], path = argv[2];
+  const std::string table = render();
+  if (mode == "--out") {
+    std::ofstream f(path);
+    if (!(f << table)) usage(("cannot write " + path).c_str());
+    std::printf("wrote %s\n", path.c_str());
+    return 0;
+  }
+  if (mode != "--check") usage("unknown mode");
+  std::ifstream f(path);
+  if (!f) usage(("cannot read " + path).c_str());
+  std::stringstream committed;
+  committed << f.rdbuf();
+  if (committed.str() != table) {
+    std::fprintf(stderr, "%s differs from its regeneration\n", path.c_str());
+    return 1;
+  }
+  std::printf("%s regenerates byte for byte\n", path.c_str());
+  return 0;
+}
