@@ -6,6 +6,8 @@
 
 #include <array>
 #include <bit>
+#include <boost/math/constants/constants.hpp>
+#include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/multiprecision/cpp_bin_float.hpp>
 #include <cmath>
 #include <cstdio>
@@ -663,6 +665,159 @@ TEST(EllipticReference, FKernelFaithfulWhereItsStepCountChanges) {
       probed[0], probed[1], probed[2], probed[3]);
   for (int k = 0; k < 4; ++k)
     EXPECT_GT(probed[k], 0) << "no probe after " << k << " steps";
+}
+
+// F's kernel at small amplitudes (phi <= kFSmallPhi) returns phi (1 + eps) with eps in plain
+// double (f_small_eps in the kernel): the absolute error of eps, F's relative error before the
+// one rounding, stays below the kernel's derived bound kFSmallEpsBound (3 * 2^-56) against
+// 50-digit F, in every copy, on phi uniform up to the threshold, at it, near 0 and in the
+// subnormal range, with m uniform, at 0 and 1 and near both; and the rounded F is faithful.
+TEST(EllipticReference, FSmallAmplitudeEpsWithinItsBound) {
+  namespace d = math::detail;
+  const auto kernels = supported_kernels();
+  if (kernels.empty()) GTEST_SKIP() << "this CPU lacks AVX2/FMA: F's kernel is not used";
+  // The series needs the roots' deviations within kFKernelSeriesRange: at most 2v/(3 - 2v)
+  // with v = 1 - cos phi (the derivation at f_small_eps).
+  const double v_max = 1 - std::cos(d::kFSmallPhi);
+  EXPECT_LE(2 * v_max / (3 - 2 * v_max), d::kFKernelSeriesRange);
+  sequence::Pcg32 rng(2026, 1206);
+  const Real50 bound(d::kFSmallEpsBound);
+  Real50 worst = 0;
+  std::string worst_at;
+  for (int i = 0; i < 4000; ++i) {
+    const double u = rng.next_double();
+    const int phi_kind = i % 4;
+    double phi = phi_kind == 0   ? d::kFSmallPhi * (1 - u)                        // (0, 0.72]
+                 : phi_kind == 1 ? d::kFSmallPhi * (1 - std::pow(10.0, -12 * u))  // below it
+                 : phi_kind == 2 ? d::kFSmallPhi * std::pow(10.0, -8 * u)         // phi -> 0
+                                 : std::ldexp(1.0 + u, -1070 + int(1000 * rng.next_double()));
+    if (i == 0) phi = d::kFSmallPhi;
+    if (!(phi > 0)) continue;
+    const double w = rng.next_double();
+    const int m_kind = (i / 4) % 5;
+    const double m = m_kind == 0   ? w
+                     : m_kind == 1 ? elliptic_domain::near_one(w)
+                     : m_kind == 2 ? std::pow(10.0, -17 * w)
+                     : m_kind == 3 ? (i % 8 < 4 ? 0.0 : 1.0)
+                                   : 0.5 + 0.5 * w;
+    const Real50 exact = math::ellint_f(Real50(phi), Real50(m));
+    for (const d::PiKernel kernel : kernels) {
+      const double eps = d::f_dd_small_eps(kernel, phi, m);
+      const Real50 err = abs(Real50(phi) * (1 + Real50(eps)) - exact) / exact;
+      if (err > worst) {
+        worst = err;
+        worst_at = "phi=" + std::to_string(phi) + " m=" + std::to_string(m);
+      }
+      EXPECT_LE(err, bound) << d::pi_dd_kernel_name(kernel) << " phi=" << phi << " m=" << m
+                            << " eps=" << eps << " exact=" << exact;
+      const double own = d::ellint_f_dd(kernel, phi, m);
+      EXPECT_TRUE(rounding_error(own, exact).faithful)
+          << d::pi_dd_kernel_name(kernel) << " phi=" << phi << " m=" << m << " own=" << own;
+    }
+  }
+  std::printf(
+      "F at small amplitudes: eps within %.3f u of exact (bound %.3f u, u = 2^-53), at %s\n",
+      double(worst * Real50(std::ldexp(1.0, 53))), std::ldexp(d::kFSmallEpsBound, 53),
+      worst_at.c_str());
+}
+
+// K(m) from the kernel's piecewise polynomials (lib/src/math/elliptic_k_table.inc), which the
+// complement path below subtracts from: within kKCompleteBound (0.05 u) of Boost's ellint_1 in 50
+// digits, on m uniform over the table's range [0, 15/16], at both sides of every piece boundary
+// (x = 1 - m = 2^E (1 + p/4)) and at its ends.
+TEST(EllipticReference, FComplementKWithinItsBound) {
+  namespace d = math::detail;
+  const auto kernels = supported_kernels();
+  if (kernels.empty()) GTEST_SKIP() << "this CPU lacks AVX2/FMA: F's kernel is not used";
+  std::vector<double> ms = {0.0, 15.0 / 16};
+  for (int E = -4; E <= -1; ++E)
+    for (int p = 0; p <= 4; ++p) {
+      const double x = std::ldexp(1.0 + p / 4.0, E);
+      for (const double xx : {std::nextafter(x, 0.0), x, std::nextafter(x, 2.0)})
+        if (xx >= 1.0 / 16 && xx <= 1.0) ms.push_back(1.0 - xx);  // 1 - xx is exact here
+    }
+  sequence::Pcg32 rng(2026, 1207);
+  for (int i = 0; i < 3000; ++i)
+    ms.push_back(15.0 / 16 * rng.next_double());
+  const Real50 bound(d::kKCompleteBound);
+  Real50 worst = 0;
+  for (const double m : ms) {
+    const Real50 exact = boost::math::ellint_1(sqrt(Real50(m)));
+    for (const d::PiKernel kernel : kernels) {
+      const d::DoubleDouble k = d::k_dd_complete(kernel, m);
+      const Real50 err = abs(Real50(k.hi) + Real50(k.lo) - exact) / exact;
+      worst = std::max(worst, err);
+      EXPECT_LE(err, bound) << d::pi_dd_kernel_name(kernel) << " m=" << m;
+    }
+  }
+  std::printf("K(m) of the complement path: within %.4f u of 50 digits (bound %.2f u)\n",
+              double(worst * Real50(std::ldexp(1.0, 53))), std::ldexp(d::kKCompleteBound, 53));
+}
+
+// F's kernel near phi = pi/2 takes F(phi|m) = K(m) - F(psi|m) (f_complement in the kernel) where
+// chi = pi/2 - phi has chi^2 <= kFComplementRegion (1 - m), m <= 15/16: its value before the one
+// rounding within kFComplementBound (0.44 u) of 50-digit F, in every copy, over that region, on
+// its edge and at phi = fl(pi/2) (chi = 0 in double), with m uniform, 0 and 15/16; the eps of
+// F(chi|m') it takes (m' = -m/(1 - m) < 0) within kFSmallEpsBound; and ellint_f faithful there.
+TEST(EllipticReference, FComplementWithinItsBound) {
+  namespace d = math::detail;
+  const auto kernels = supported_kernels();
+  if (kernels.empty()) GTEST_SKIP() << "this CPU lacks AVX2/FMA: F's kernel is not used";
+  sequence::Pcg32 rng(2026, 1208);
+  const Real50 bound(d::kFComplementBound), eps_bound(d::kFSmallEpsBound);
+  const Real50 half_pi = boost::math::constants::half_pi<Real50>();
+  Real50 worst = 0, worst_eps = 0;
+  std::string worst_at;
+  int in_region = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const int m_kind = i % 4;
+    const double m = m_kind == 0 ? 0.0 : m_kind == 1 ? 15.0 / 16 : 15.0 / 16 * rng.next_double();
+    const double x = 1.0 - m;  // exact for m >= 1/2, and what the kernel's region test reads
+    const double chi_max = std::sqrt(d::kFComplementRegion * x);
+    const int chi_kind = (i / 4) % 3;
+    const double u = rng.next_double();
+    double phi = chi_kind == 0   ? elliptic_domain::kHalfPi - chi_max * u
+                 : chi_kind == 1 ? elliptic_domain::kHalfPi - chi_max * (1 - 1e-9 * u)  // edge
+                                 : elliptic_domain::kHalfPi;
+    const double chi = elliptic_domain::kHalfPi - phi;
+    if (!(chi * chi <= d::kFComplementRegion * x)) phi = std::nextafter(phi, 2.0);
+    if (!((elliptic_domain::kHalfPi - phi) * (elliptic_domain::kHalfPi - phi) <=
+          d::kFComplementRegion * x))
+      continue;
+    ++in_region;
+    const Real50 exact = math::ellint_f(Real50(phi), Real50(m));
+    // F(chi|m') exactly, for eps: chi = pi/2 - phi in 50 digits, m' = -m/(1 - m).
+    const Real50 chi50 = half_pi - Real50(phi), mt50 = -Real50(m) / (1 - Real50(m));
+    const double mt = static_cast<double>(mt50);
+    for (const d::PiKernel kernel : kernels) {
+      const d::DoubleDouble f = d::f_dd_complement(kernel, phi, m);
+      const Real50 err = abs(Real50(f.hi) + Real50(f.lo) - exact) / exact;
+      if (err > worst) {
+        worst = err;
+        worst_at = "phi=" + std::to_string(phi) + " m=" + std::to_string(m);
+      }
+      EXPECT_LE(err, bound) << d::pi_dd_kernel_name(kernel) << " phi=" << phi << " m=" << m;
+      const double own = d::ellint_f_dd(kernel, phi, m);
+      EXPECT_TRUE(rounding_error(own, exact).faithful)
+          << d::pi_dd_kernel_name(kernel) << " phi=" << phi << " m=" << m << " own=" << own;
+      // eps at a double chi and m' (the kernel's are pairs): F(chi|m')/chi - 1 in 50 digits.
+      const double chi_d = static_cast<double>(chi50);
+      if (chi_d > 0) {
+        const double eps = d::f_dd_small_eps(kernel, chi_d, mt);
+        const Real50 f_chi = math::ellint_f(Real50(chi_d), Real50(mt));
+        const Real50 e = abs(Real50(chi_d) * (1 + Real50(eps)) - f_chi) / f_chi;
+        worst_eps = std::max(worst_eps, e);
+        EXPECT_LE(e, eps_bound) << "eps at chi=" << chi_d << " m'=" << mt;
+      }
+    }
+  }
+  EXPECT_GT(in_region, 2500);
+  std::printf(
+      "F by the complement: within %.3f u of 50 digits before rounding (bound %.2f u), at %s; "
+      "its eps within %.3f u (bound %.3f u)\n",
+      double(worst * Real50(std::ldexp(1.0, 53))), std::ldexp(d::kFComplementBound, 53),
+      worst_at.c_str(), double(worst_eps * Real50(std::ldexp(1.0, 53))),
+      std::ldexp(d::kFSmallEpsBound, 53));
 }
 
 TEST(EllipticReference, MissingTableFailsLoudly) {

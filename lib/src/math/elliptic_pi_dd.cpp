@@ -48,12 +48,15 @@ struct Copy {
   double (*f_pairs)(double, double, DoubleDouble) noexcept;
   FDdEntry f;
   double (*f_series)(double, double) noexcept;
+  double (*f_small_eps)(double, double) noexcept;
+  DoubleDouble (*f_complement)(double, double) noexcept;
+  DoubleDouble (*k_complete)(double) noexcept;
 };
 #if DISKLAB_PI_DD
 #define DL_COPY(ns)                                                                      \
   Copy {                                                                                 \
     &ns::pi, &ns::pi, &ns::sincos, &ns::atan, &ns::log, &ns::rc_minus_1, &ns::f, &ns::f, \
-        &ns::f_series                                                                    \
+        &ns::f_series, &ns::f_small_eps, &ns::f_complement, &ns::k_complete              \
   }
 constexpr Copy kAvx2Copy = DL_COPY(pi_avx2), kAvx512Copy = DL_COPY(pi_avx512);
 #undef DL_COPY
@@ -149,6 +152,18 @@ double ellint_f_dd(PiKernel kernel, double phi, double m) noexcept {
 double f_dd_series(PiKernel kernel, double e2, double e3) noexcept {
   const Copy* copy = copy_of(kernel);
   return copy != nullptr ? copy->f_series(e2, e3) : kNaN;
+}
+double f_dd_small_eps(PiKernel kernel, double phi, double m) noexcept {
+  const Copy* copy = copy_of(kernel);
+  return copy != nullptr ? copy->f_small_eps(phi, m) : kNaN;
+}
+DoubleDouble f_dd_complement(PiKernel kernel, double phi, double m) noexcept {
+  const Copy* copy = copy_of(kernel);
+  return copy != nullptr ? copy->f_complement(phi, m) : DoubleDouble{kNaN, 0};
+}
+DoubleDouble k_dd_complete(PiKernel kernel, double m) noexcept {
+  const Copy* copy = copy_of(kernel);
+  return copy != nullptr ? copy->k_complete(m) : DoubleDouble{kNaN, 0};
 }
 
 void pi_dd_sincos(PiKernel kernel, double phi, DoubleDouble& sin_phi,

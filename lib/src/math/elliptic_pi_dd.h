@@ -38,13 +38,34 @@ double f_dd_series(PiKernel kernel, double e2, double e3) noexcept;
 // series' range kFKernelSeriesRange.
 inline constexpr double kFKernelSpread = 0.3;
 inline constexpr double kFKernelSeriesRange = 2 * kFKernelSpread / 3;
+// A double-double, value hi + lo, as the hooks below return it.
+struct DoubleDouble {
+  double hi, lo;
+};
+// At phi <= kFSmallPhi F's kernel takes no sin, cos or duplication step: F = phi (1 + eps), with
+// eps in plain double from Taylor series in phi^2 and the same series in the roots (their
+// deviations stay within kFKernelSeriesRange up to phi = acos(0.75) = 0.7227). f_dd_small_eps
+// returns that eps (m in [0, 1]), and kFSmallEpsBound bounds its absolute error, which is F's
+// relative error before the one rounding (the derivation is at f_small_eps in the kernel).
+inline constexpr double kFSmallPhi = 0.72;
+inline constexpr double kFSmallEpsBound = 0.375 * 0x1p-53;
+double f_dd_small_eps(PiKernel kernel, double phi, double m) noexcept;
+// Near phi = pi/2 F's kernel takes the complement, F(phi|m) = K(m) - F(psi|m), with F(psi|m)
+// from f_small_eps at chi = pi/2 - phi and m' = -m/(1 - m), where chi^2 <= kFComplementRegion
+// (1 - m) and 1 - m >= 1/16; K(m) by piecewise polynomials (lib/src/math/elliptic_k_table.inc).
+// f_dd_complement returns that path's value before its one rounding, as a pair (for any phi in
+// (pi/4, pi/2] and m in [0, 15/16]; outside the region it is not F), within kFComplementBound
+// relative of F in the region; k_dd_complete returns K(m), m in [0, 15/16], within
+// kKCompleteBound relative. Derivations at f_complement in the kernel.
+inline constexpr double kFComplementRegion = 0.54;
+inline constexpr double kFComplementBound = 0.44 * 0x1p-53;
+inline constexpr double kKCompleteBound = 0.05 * 0x1p-53;
+DoubleDouble f_dd_complement(PiKernel kernel, double phi, double m) noexcept;
+DoubleDouble k_dd_complete(PiKernel kernel, double m) noexcept;
 // The kernel's double-double elementary functions in the given copy, exported for their
 // accuracy tests (results as {hi, lo} pairs; NaN where the copy is not supported): sin and cos
 // of phi in [0, pi/2], atan of x >= 0, log of x >= 1, and R_C(1, 1 + e) - 1 for
 // 0.01 <= |e| < 1.
-struct DoubleDouble {
-  double hi, lo;
-};
 void pi_dd_sincos(PiKernel kernel, double phi, DoubleDouble& sin_phi,
                   DoubleDouble& cos_phi) noexcept;
 DoubleDouble pi_dd_atan(PiKernel kernel, DoubleDouble x) noexcept;

@@ -21,7 +21,10 @@
   DoubleDouble rc_minus_1(DoubleDouble e) noexcept;                               \
   double f(double phi, double m, DoubleDouble one_minus_m) noexcept;              \
   double f(double phi, double m) noexcept;                                        \
-  double f_series(double e2, double e3) noexcept;
+  double f_series(double e2, double e3) noexcept;                                 \
+  double f_small_eps(double phi, double m) noexcept;                              \
+  DoubleDouble f_complement(double phi, double m) noexcept;                       \
+  DoubleDouble k_complete(double m) noexcept;
 
 namespace disklab::math::detail {
 namespace pi_avx2 {
