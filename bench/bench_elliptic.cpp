@@ -28,12 +28,15 @@
 //
 // F/mixed/own is ellint_f<double> as a caller gets it: F's double-double kernel (same file and
 // copy as Pi's) where the CPU runs it; F/mixed/own-portable always times the long-double path.
-// F/mixed/own-double times the kernel's algorithm without its error terms (see f_double_alg):
-// what faithful rounding costs in speed. The summary prints how far both plain-double variants
-// land from the library's values on the mixed set. Where F's time goes: F/mixed/own-chained
-// feeds each result into the next input (one evaluation's latency against Boost's, not the
-// throughput of independent calls), and F/steps0, F/steps1, F/steps2+ time F on inputs drawn like
-// the mixed set's but kept by the kernel's number of duplication steps (0, 1, 2 or more).
+// F/mixed/own-double times the kernel's duplication path (its third path, below) for every input,
+// in plain double with libm's sincos (see f_double_alg): the algorithm the kernel's first two
+// paths replace, without the error terms that make it faithful. The summary prints how far both
+// plain-double variants land from the library's values on the mixed set. Where F's time goes:
+// F/mixed/own-chained feeds each result into the next input (one evaluation's latency against
+// Boost's, not the throughput of independent calls), and F/small, F/complement, F/steps0-1 and
+// F/steps2+ time F on inputs drawn like the mixed set's but kept by the kernel's path: phi <=
+// kFSmallPhi (phi (1 + eps), no sin or cos), the complement near pi/2 (K(m) - F(psi|m)), and the
+// duplication path with at most one step or with two and more.
 //
 // The summary after the table repeats the median ratios and checks the issues' targets:
 // own Pi <= 0.4x the time of boost::math::ellint_3 with promote_double<false> (issue 4), and
@@ -79,16 +82,25 @@ struct Input {
   double x, y, z, p;    // the Carlson arguments Pi evaluates
 };
 
-// kFSteps0/1/2: F's inputs drawn like the mixed set's (phi, m), kept where the kernel takes 0, 1,
-// or 2 and more duplication steps (f_kernel_steps).
-enum class Band { kMixed, kPositive, kNegativeSmall, kNegativeLarge, kFSteps0, kFSteps1, kFSteps2 };
+// kFSmall .. kFSteps2: F's inputs drawn like the mixed set's (phi, m), kept by the kernel's path
+// (f_kernel_path).
+enum class Band {
+  kMixed,
+  kPositive,
+  kNegativeSmall,
+  kNegativeLarge,
+  kFSmall,
+  kFComplement,
+  kFSteps01,
+  kFSteps2
+};
 
-int f_kernel_steps(double phi, double m);
+int f_kernel_path(double phi, double m);
 
 std::vector<Input> make_inputs(Band band) {
   disklab::sequence::Pcg32 rng(1, static_cast<uint64_t>(band) + 11);
-  const bool by_steps = band >= Band::kFSteps0;
-  const int steps = static_cast<int>(band) - static_cast<int>(Band::kFSteps0);
+  const bool by_path = band >= Band::kFSmall;
+  const int path = static_cast<int>(band) - static_cast<int>(Band::kFSmall);
   std::vector<Input> in(kInputs);
   for (int i = 0, drawn = 0; i < kInputs; ++drawn) {
     Input& r = in[i];
@@ -97,7 +109,7 @@ std::vector<Input> make_inputs(Band band) {
         (drawn % 4 == 3) ? 1.0 - std::pow(10.0, -3.0 - 9.0 * rng.next_double()) : rng.next_double();
     r.k = std::sqrt(r.m);
     r.phi = rng.next_double() * (std::numbers::pi / 2);
-    const int b = band == Band::kMixed || by_steps ? i % 3 : static_cast<int>(band) - 1;
+    const int b = band == Band::kMixed || by_path ? i % 3 : static_cast<int>(band) - 1;
     const double u = rng.next_double();
     if (b == 0)
       r.n = u;  // (0, 1) (u = 0 has probability 2^-32)
@@ -111,17 +123,17 @@ std::vector<Input> make_inputs(Band band) {
     r.z = 1.0;
     r.p = r.n > 0 ? 1.0 - r.n * s * s : 1.0 - (r.m - r.n) / (1.0 - r.n) * s * s;
     if (!(r.p > 0)) r.p = 1e-300;  // never: n < 1 and N < 1 keep p > 0
-    if (!by_steps || std::min(f_kernel_steps(r.phi, r.m), 2) == steps) ++i;
+    if (!by_path || f_kernel_path(r.phi, r.m) == path) ++i;
   }
   return in;
 }
 
 const std::vector<Input>& inputs(Band band) {
-  static const std::array<std::vector<Input>, 7> sets{
+  static const std::array<std::vector<Input>, 8> sets{
       make_inputs(Band::kMixed),         make_inputs(Band::kPositive),
       make_inputs(Band::kNegativeSmall), make_inputs(Band::kNegativeLarge),
-      make_inputs(Band::kFSteps0),       make_inputs(Band::kFSteps1),
-      make_inputs(Band::kFSteps2)};
+      make_inputs(Band::kFSmall),        make_inputs(Band::kFComplement),
+      make_inputs(Band::kFSteps01),      make_inputs(Band::kFSteps2)};
   return sets[static_cast<int>(band)];
 }
 
@@ -172,13 +184,13 @@ __attribute__((target("avx2,fma"), always_inline)) inline void f_double_step(dou
   r2 = std::sqrt(s02 * s12);
 }
 
-// F as the kernel computes it (elliptic_pi_dd_kernel.inc, f_dd: duplication on the roots c, Delta,
-// 1 of R_F's arguments while their spread exceeds the kernel's kFKernelSpread, then the degree-17
-// series) with every quantity a plain double and libm's sincos: the kernel's cost without the
-// double-double error terms that make it faithful. Compiled for the kernel's AVX2 + FMA; the
-// series is the kernel's own (one call more than the kernel pays). Registered where the kernel
-// runs. Not a library function: it is not faithful (the summary prints its distance from
-// ellint_f).
+// F by the kernel's duplication path (elliptic_pi_dd_kernel.inc, f_dd beyond its first two paths:
+// duplication on the roots c, Delta, 1 of R_F's arguments while their spread exceeds the
+// kernel's kFKernelSpread, then the degree-17 series) for every input, with every quantity a
+// plain double and libm's sincos: the algorithm without the double-double error terms that make
+// it faithful, and without the first two paths. Compiled for the kernel's AVX2 + FMA; the series
+// is the kernel's own (one call more than the kernel pays). Registered where the kernel runs. Not
+// a library function: it is not faithful (the summary prints its distance from ellint_f).
 __attribute__((target("avx2,fma"))) double f_double_alg(double phi, double m) {
   if (phi < 0x1p-26) return phi;
   double s, c;
@@ -195,21 +207,27 @@ __attribute__((target("avx2,fma"))) double f_double_alg(double phi, double m) {
   return s * inv_mu * (1.0 + g) * scale;
 }
 
-// The kernel's number of duplication steps for F(phi|m) (f_dd in elliptic_pi_dd_kernel.inc), by its
-// rule in plain double: it may differ from the kernel's count where the spread lies within a few
-// roundings of kFKernelSpread. For sorting inputs into the timed step classes only.
-int f_kernel_steps(double phi, double m) {
-  if (phi < 0x1p-26) return 0;
+// The kernel's path for F(phi|m), phi in (0, pi/2], m in [0, 1] (f_dd in
+// elliptic_pi_dd_kernel.inc): 0 small amplitude (phi <= kFSmallPhi), 1 the complement near pi/2
+// (chi = pi/2 - phi with chi^2 <= kFComplementRegion (1 - m), 1 - m >= 1/16), else the
+// duplication path with 0 or 1 step (2) or more (3), its steps counted by the kernel's rule in
+// plain double (which may differ from the kernel's count where the spread lies within a few
+// roundings of kFKernelSpread). For sorting inputs into the timed classes only.
+int f_kernel_path(double phi, double m) {
+  namespace d = dm::detail;
+  if (phi <= d::kFSmallPhi) return 0;
+  const double chi = std::numbers::pi / 2 - phi, x = 1.0 - m;
+  if (x >= 0x1p-4 && chi * chi <= d::kFComplementRegion * x) return 1;
   const double s = std::sin(phi), c = std::cos(phi);
-  double r0 = c, r1 = std::sqrt(c * c + (1.0 - m) * s * s), r2 = 1.0;
+  double r0 = c, r1 = std::sqrt(c * c + x * s * s), r2 = 1.0;
   int k = 0;
-  for (; 3 * (r2 - r0) > dm::detail::kFKernelSpread * (r0 + r1 + r2); ++k) {
+  for (; 3 * (r2 - r0) > d::kFKernelSpread * (r0 + r1 + r2); ++k) {
     const double s01 = r0 + r1, s12 = r1 + r2, s02 = r0 + r2;
     r0 = std::sqrt(s01 * s02);
     r1 = std::sqrt(s01 * s12);
     r2 = std::sqrt(s02 * s12);
   }
-  return k;
+  return k <= 1 ? 2 : 3;
 }
 
 template <Fn fn, Impl impl>
@@ -321,14 +339,14 @@ void register_benchmarks() {
                                  Band::kMixed)
         ->UseManualTime()
         ->Unit(benchmark::kMicrosecond);
-  // Where F's time goes: one evaluation's latency, and the cost by the kernel's step count.
+  // Where F's time goes: one evaluation's latency, and the cost by the kernel's path.
   benchmark::RegisterBenchmark("F/mixed/own-chained", BM_Elliptic<Fn::kF, Impl::kOwn, true>,
                                Band::kMixed)
       ->UseManualTime()
       ->Unit(benchmark::kMicrosecond);
   for (const auto& [band, name] :
-       {std::pair{Band::kFSteps0, "F/steps0/own"}, std::pair{Band::kFSteps1, "F/steps1/own"},
-        std::pair{Band::kFSteps2, "F/steps2+/own"}})
+       {std::pair{Band::kFSmall, "F/small/own"}, std::pair{Band::kFComplement, "F/complement/own"},
+        std::pair{Band::kFSteps01, "F/steps0-1/own"}, std::pair{Band::kFSteps2, "F/steps2+/own"}})
     benchmark::RegisterBenchmark(name, BM_Elliptic<Fn::kF, Impl::kOwn>, band)
         ->UseManualTime()
         ->Unit(benchmark::kMicrosecond);
@@ -400,25 +418,18 @@ void print_summary(const disklab::bench::Results& rows) {
                                              ? "the double-double kernel"
                                              : "the portable long-double path");
   }
-  if (rows.count("F/steps0/own") != 0) {
-    std::array<int, 3> count{};
-    double steps = 0.0;
-    for (const Input& r : inputs(Band::kMixed)) {
-      const int k = f_kernel_steps(r.phi, r.m);
-      ++count[std::min(k, 2)];
-      steps += k;
-    }
+  if (rows.count("F/small/own") != 0) {
+    std::array<int, 4> count{};
+    for (const Input& r : inputs(Band::kMixed))
+      ++count[f_kernel_path(r.phi, r.m)];
     std::printf(
-        "F by the kernel's duplication steps (inputs drawn like the mixed set's; share of the "
-        "mixed "
-        "set, %.2f steps on average):\n",
-        steps / kInputs);
-    const char* names[3] = {"F/steps0/own", "F/steps1/own", "F/steps2+/own"};
-    for (int k = 0; k < 3; ++k) {
+        "F by the kernel's path (inputs drawn like the mixed set's; share of the mixed set):\n");
+    const char* names[4] = {"F/small/own", "F/complement/own", "F/steps0-1/own", "F/steps2+/own"};
+    for (int k = 0; k < 4; ++k) {
       const auto row = rows.find(names[k]);
       if (row == rows.end()) continue;
       std::printf(
-          "  %-14s %5.1f%% of the mixed set: %5.1f ns, Boost %5.1f ns on the same inputs (%.3fx)\n",
+          "  %-17s %5.1f%% of the mixed set: %5.1f ns, Boost %5.1f ns on the same inputs (%.3fx)\n",
           names[k], 100.0 * count[k] / kInputs, counter(row->second, "ns"),
           counter(row->second, "boost_double_ns"), counter(row->second, "ratio_to_boost_double"));
     }
@@ -433,8 +444,8 @@ void print_summary(const disklab::bench::Results& rows) {
         100.0 * counter(f_own->second, "ns") / counter(chained->second, "ns"));
   if (rows.count("F/mixed/own-double") != 0)
     std::printf(
-        "F/mixed/own-double (the kernel's algorithm in plain double): up to %.1f ulp from own F "
-        "on the mixed set.\n",
+        "F/mixed/own-double (the duplication path for every input, in plain double): up to %.1f "
+        "ulp from own F on the mixed set.\n",
         max_ulp_distance<Fn::kF, Impl::kOwnDoubleAlg>());
   if (rows.count("Pi/mixed/own-double-loop") != 0)
     std::printf(
