@@ -1,8 +1,9 @@
 // libFuzzer: the elliptic integrals (math/elliptic.h) on any doubles. Contracts: in the domain
 // (finite phi, finite m <= 1, n <= 1) F and Pi are not NaN and keep F's oddness exactly; outside it
-// they are NaN; Carlson's R_F, R_D, R_J of non-negative finite arguments are >= 0 or +inf, never
-// NaN (0 where they underflow); no crash, no undefined behaviour (UBSan), no out-of-bounds access
-// (ASan).
+// they are NaN; where F runs its double-double kernel (0 < |phi| <= pi/2, m in [0, 1]; its three
+// paths) it is within one ulp of the portable long-double path, both being faithfully rounded;
+// Carlson's R_F, R_D, R_J of non-negative finite arguments are >= 0 or +inf, never NaN (0 where
+// they underflow); no crash, no undefined behaviour (UBSan), no out-of-bounds access (ASan).
 #include <cmath>
 
 #include "disklab/math/elliptic.h"
@@ -22,6 +23,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     FUZZ_CHECK(!std::isnan(f));
     FUZZ_CHECK(math::ellint_f(-phi, m) == -f);  // odd, exactly
     if (phi >= 0.0) FUZZ_CHECK(f >= 0.0);
+    const double a = std::fabs(phi);
+    if (a > 0.0 && a <= 1.5707963267948966 && m >= 0.0) {
+      // Two faithfully rounded values of one number are equal or adjacent doubles.
+      const double portable = math::detail::ellint_f_core(a, m, 1.0 - m);
+      FUZZ_CHECK(std::fabs(std::fabs(f) - portable) <=
+                 std::nextafter(portable, INFINITY) - portable);
+    }
   } else if (std::isnan(phi) || std::isnan(m) || m > 1.0) {
     FUZZ_CHECK(std::isnan(f));
   }

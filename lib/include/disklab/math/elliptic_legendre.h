@@ -49,11 +49,15 @@
 // s, c, R_C and atan in long double.
 //
 // FAST PATH (F and Pi in double only). F: on the same CPUs as Pi's kernel below, ellint_f<double>
-// with m in [0, 1] and 0 < |phi| <= pi/2 runs a double-double duplication on the square roots of
-// R_F's arguments, as many steps as their spread needs (often none), with a degree-17 series in
-// them (lib/src/math/elliptic_pi_dd_kernel.inc, with its error bound: below 2^-57.2 relative
-// before the one rounding, so faithfully rounded); phi beyond
-// pi/2 and m < 0 take the portable path. Speed: bench_elliptic, F/mixed/own vs own-portable.
+// with m in [0, 1] and 0 < |phi| <= pi/2 runs one of three paths (lib/src/math/
+// elliptic_pi_dd_kernel.inc, each with its error bound relative to F before the one rounding,
+// all below 2^-54, so F is faithfully rounded): at phi <= 0.72, phi (1 + eps) with eps from
+// Taylor series in phi^2 and the series in the roots of R_F's arguments, in plain double with a
+// few exact pairs (0.375 * 2^-53); near pi/2, K(m) - F(psi|m) with F(psi|m) the same way and K
+// from tabulated polynomials (0.44 * 2^-53); else a double-double duplication on the square roots
+// of R_F's arguments, as many steps as their spread needs, with a degree-17 series in them
+// (2^-57.2). phi beyond pi/2 and m < 0 take the portable path. Speed: bench_elliptic,
+// F/mixed/own vs own-portable, and by path.
 // Pi: on x86-64 CPUs with AVX2 and FMA (checked once at run time;
 // a second copy uses AVX-512VL where present), ellint_pi<double> with m in [0, 1] and phi in
 // (0, pi/2] runs a double-double version of the same loop (lib/src/math/elliptic_pi_dd_kernel.inc),
