@@ -10,7 +10,7 @@
 // The reported time and items/s are the implementation's own.
 //
 // Inputs: a fixed pseudo-random set (PCG32, seed 1) of kInputs (n, phi, m) triples covering the
-// domain of DESIGN.md: m in [0, 1) (a quarter of them within 1e-3 of 1, where the duplication
+// domain of docs/design.md: m in [0, 1) (a quarter of them within 1e-3 of 1, where the duplication
 // needs more steps), phi in [0, pi/2], n in three bands of equal size: (0, 1), [-1, 0) and
 // log-uniform in [-1e6, -1) (the parallel map's n = -b_t^2 for far, grazing lights). Sets:
 //  - mixed: all three bands interleaved (branch patterns of a real caller);

@@ -14,7 +14,7 @@
 //    it, and the cell's cap sector (1 - h uniform in [0, 1 - h_r(phi_j)], phi_j the cell's
 //    start) is the proposal; points outside the ellipse are rejected with zero weight and every
 //    sample reports pdf 1/Omega, as the paper's production renderer does (biased: see
-//    DESIGN.md, "Rejection must stay unbiased"). Omega comes from eq. (19) with Boost.
+//    docs/design.md, "Rejection must stay unbiased"). Omega comes from eq. (19) with Boost.
 //
 // Both use disklab's ellipse_shape (closed forms of Sec. 3) for alpha, beta, a, b, n, m and its
 // eps1 quadrant convention, so that their samples can be compared with the exact map's.
@@ -94,7 +94,7 @@ struct PublishedGeometry {
     return std::sqrt(std::max(0.0, 1.0 - r2));
   }
 
-  // Eq. (22) with eps2 = 0 at the centre (DESIGN.md), unfolded into quadrant k, and the hit.
+  // Eq. (22) with eps2 = 0 at the centre (docs/design.md), unfolded into quadrant k, and the hit.
   ellipse::EllipseSample finish(int k, double phi, double hr, double eps2) const {
     const double h = 1.0 - eps2 * (1.0 - hr);
     const double rho = std::sqrt(std::max(0.0, 1.0 - h * h));

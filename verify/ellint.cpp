@@ -4,7 +4,7 @@
 //   disklab ellint pi --n N (--phi PHI | --complete) --m M [--one-minus-n NC] [--one-minus-m MC]
 //                     [--json]
 //
-// Convention (DESIGN.md section 3): F(phi|m) = int_0^phi dt / sqrt(1 - m sin^2 t),
+// Convention (docs/design.md section 3): F(phi|m) = int_0^phi dt / sqrt(1 - m sin^2 t),
 // Pi(n; phi|m) = int_0^phi dt / ((1 - n sin^2 t) sqrt(1 - m sin^2 t)). Any finite phi is
 // accepted: the library reduces it (odd, I(phi + j pi) = I(phi) + 2j I(pi/2); elliptic_legendre.h,
 // Boost.Math's semantics). --complete asks for K(m) = F(pi/2|m) or Pi(n|m) at exactly pi/2,

@@ -16,7 +16,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/contract_lib.bash"
 PRODUCTION_TARGET=1e-14  # relative error of the production solid angle, every configuration
 OWN_MAX_ULP=2            # own F and Pi against the 50-digit tables
 PRINTED_LOSS_AT_LEAST=1e-6  # worst error of eq. (19) as printed over 1e-6..1e8 radii: the
-# cancellation grows ~2 digits per decade, so far rows must show it (DESIGN.md Sec. 3)
+# cancellation grows ~2 digits per decade, so far rows must show it (docs/design.md section 3)
 PROJECTED_TARGET=1e-14  # relative error of P (issue 19), every row, unclipped and clipped
 PROJECTED_MIN_ROWS=100  # projected_P.csv: 145 rows, 1e-6 .. 1e8 radii, straddling included
 

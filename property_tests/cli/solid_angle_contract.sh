@@ -19,7 +19,7 @@ TOL_PRODUCTION=1e-14
 # the cancellation factor ~2 pi / Omega < 2 pi, times the conditioning of 1 - n, 1 - m: 1e-13.
 TOL_PRINTED_NEAR=1e-13
 # ... and their loss far away must be visible: at >= 1e6 radii eq. (19) is off by more than 1e-6
-# (about two digits lost per decade; DESIGN.md Sec. 3).
+# (about two digits lost per decade; docs/design.md section 3).
 PRINTED_FAR_LOSS=1e-6
 
 # ---- every row of the reference table: plain output and --json ----

@@ -1,4 +1,4 @@
-// Area preservation of stratum images (DESIGN.md Sec. 4): the image of every stratum of an
+// Area preservation of stratum images (docs/design.md section 4): the image of every stratum of an
 // n x n grid of the unit square has area pi / n^2 under the polar and concentric maps and
 // pi / (4 n^2) under their quarter-disk variants (polar4, concentric4 before rotation).
 // The area comes from Green's theorem on the mapped boundary (support/planar.h), computed from

@@ -1,5 +1,5 @@
 // Pad-zero and rejection are unbiased estimators of a disk integral, and their API reports
-// weights and consumed square points honestly (Christensen 2018, Sec. 3; DESIGN.md "Rejection
+// weights and consumed square points honestly (Christensen 2018, Sec. 3; docs/design.md "Rejection
 // must stay unbiased"). The maps are checked the same way, and two biased variants must fail.
 #include <gtest/gtest.h>
 
@@ -89,7 +89,7 @@ INSTANTIATE_TEST_SUITE_P(AllStrategies, Unbiased, ::testing::ValuesIn(kAllStrate
                          });
 
 // Negative controls for the bound's power: pad-zero without the 4/pi weight, and rejection
-// that returns a zero sample (weight 1) instead of trying again, as DESIGN.md warns. Both
+// that returns a zero sample (weight 1) instead of trying again, as docs/design.md warns. Both
 // scale the estimate by the acceptance rate pi/4.
 TEST(Unbiased, RejectsPadZeroWithoutItsWeight) {
   const t::MeanEstimate m = t::mean_estimate(estimates(Strategy::pad_zero, true));

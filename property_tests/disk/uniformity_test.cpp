@@ -1,4 +1,4 @@
-// Chi-square uniformity of every strategy's disk points (DESIGN.md Sec. 4, Mitsuba-style):
+// Chi-square uniformity of every strategy's disk points (docs/design.md section 4, Mitsuba-style):
 // counts in a Cartesian grid of bins against expected counts from the EXACT area of each bin
 // clipped to the disk (support/planar.h), low-count bins pooled, Sidak-corrected significance.
 // The seed blog's linear-radius polar map is the negative control: the same test must reject it.

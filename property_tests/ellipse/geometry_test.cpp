@@ -1,5 +1,5 @@
 // Spherical-ellipse geometry (Guillén et al. 2017, Sec. 3, eqs. 3-5, with the frame fix of
-// DESIGN.md Sec. 3): frames, shape, degenerate input, invariances.
+// docs/design.md section 3): frames, shape, degenerate input, invariances.
 //
 // Replay a rapidcheck failure with RC_PARAMS="reproduce=<string it printed>".
 #include <gtest/gtest.h>

@@ -34,7 +34,7 @@ constexpr double kRoundTripW = 1e-11;
 // read as 1e-8 of the ellipse's size).
 constexpr double kRoundTripZUlps = 4;
 // ld-radial goes through the concentric map and its atan-based inverse (absolute accuracy a
-// few ulps, DESIGN of disk/concentric.h) and the polar detour; same budget as radial.
+// few ulps, disk/concentric.h) and the polar detour; same budget as radial.
 constexpr double kRoundTripULd = 1e-13;
 
 double uniform01(uint64_t bits) {

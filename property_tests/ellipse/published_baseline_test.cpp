@@ -37,7 +37,8 @@ double fraction_error(const ellipse::RadialMap& exact, const Vec3& w, double eps
 // Newton stops at |Omega_r(phi) - t Omega_r(pi/2)| < 1e-5 sr, so the fraction t is off by at
 // most 1e-5 / quadrant plus eq. (19)'s own error (cancellation, ~1e-16 / a^2 of the quadrant:
 // below 1e-9 at these scenes); the factor 1.01 covers the latter. The pdf is 1/Omega to eq.
-// (19)'s cancellation (relative 1e-9 at the far scene's a ~ 1e-3 by DESIGN.md; 1e-8 bounds it).
+// (19)'s cancellation (relative 1e-9 at the far scene's a ~ 1e-3 by docs/design.md; 1e-8 bounds
+// it).
 template <class Policy>
 void check_published(const char* policy) {
   sequence::Pcg32 rng(3);

@@ -1,7 +1,7 @@
 // Convergence of the randomized quadrature error over the unit square (Christensen 2018, Sec. 3
-// and DESIGN.md "Randomizations and nets"): RMS error over many seeds at N = 2^4 .. 2^12, fitted
-// log-log slope. Owen-scrambled nets (sobol-owen, pmj02) reach ~N^-1.5 on a smooth integrand and
-// ~N^-0.75 on one with a discontinuity along a curve; random points ~N^-0.5 on both.
+// and docs/design.md "Randomizations and nets"): RMS error over many seeds at N = 2^4 .. 2^12,
+// fitted log-log slope. Owen-scrambled nets (sobol-owen, pmj02) reach ~N^-1.5 on a smooth integrand
+// and ~N^-0.75 on one with a discontinuity along a curve; random points ~N^-0.5 on both.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -113,7 +113,7 @@ TEST(Convergence, FittedSlopesMatchTheKnownRates) {
        },
        {-1.5, -0.75}},
       // A rotation or a digital shift randomizes the net without Owen's nested independence:
-      // smooth convergence is asymptotically ~N^-1 (DESIGN.md; Christensen 2018 Figs. 5-6 show
+      // smooth convergence is asymptotically ~N^-1 (docs/design.md; Christensen 2018 Figs. 5-6 show
       // the gap to Owen/pmj02). Over N = 16..4096 the fitted slopes are about -1.2 (erratic
       // curves between the two regimes), so no nominal slope is asserted for the smooth case
       // (NaN); the gap to Owen is asserted below instead.

@@ -1,4 +1,4 @@
-// (0,2)-net property (Christensen 2018, Sec. 2; DESIGN.md "Randomizations and nets"): every
+// (0,2)-net property (Christensen 2018, Sec. 2; docs/design.md "Randomizations and nets"): every
 // power-of-two prefix up to 2^16 and every aligned power-of-two block of Sobol' (unrandomized,
 // xor- and Owen-scrambled) and pmj02 puts exactly one point in each elementary interval; so do
 // pmj02bn's prefixes and their second halves. pmj's sub-square rule holds for both.

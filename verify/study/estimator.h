@@ -1,5 +1,5 @@
 #pragma once
-// The estimator harness shared by the studies (DESIGN.md, section 5): a scene, shading points,
+// The estimator harness shared by the studies (docs/design.md, section 5): a scene, shading points,
 // a sampler over a randomized square sequence, and one estimate per sample count N. Sequences
 // are progressive, so one pass over the first N_max samples gives every N as a prefix.
 //

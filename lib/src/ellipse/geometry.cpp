@@ -159,7 +159,7 @@ SphericalEllipse spherical_ellipse_shape(const Disk& disk, const Vec3& o) noexce
   const Vec3 zd = -n;
   const double e = v_unit_max.cross(n).norm() * v_max;
 
-  // Eq. (3) with x and y swapped (DESIGN.md Sec. 3): x_d = normalize(z_d x (c - o)).
+  // Eq. (3) with x and y swapped (docs/design.md section 3): x_d = normalize(z_d x (c - o)).
   const math::Frame disk_frame = math::Frame::from_zx(zd, zd.cross(v_unit_max));
   const EllipseShape s = ellipse_shape(h, e, disk.radius);
   if (!(s.a_t > 0.0) || !std::isfinite(s.a_t) || !(s.b_t > 0.0) || !std::isfinite(s.b_t))

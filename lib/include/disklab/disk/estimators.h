@@ -11,7 +11,7 @@
 //    point has weight 1 (it is uniform on the disk), and the number of square points it used is
 //    reported, because a progressive sequence's later points shift along when points are
 //    rejected. It loops over the sequence (never returns a zero sample with pdf 1/pi, which
-//    would bias the estimate by the acceptance rate pi/4; see DESIGN.md "Rejection must stay
+//    would bias the estimate by the acceptance rate pi/4; see docs/design.md "Rejection must stay
 //    unbiased"). A cap on the tries keeps a degenerate sequence from looping forever.
 #include <cstdint>
 

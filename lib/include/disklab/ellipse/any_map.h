@@ -8,7 +8,7 @@
 //  - sample(u) is a pure function of u for every map, so it can be inverted and stratified:
 //    gamito and tabulated run in PROPOSAL mode (one candidate per u; valid == accepted; pdf is
 //    the proposal's solid-angle density, so (1/N) sum_{accepted} f / pdf is unbiased with N
-//    counting every candidate, DESIGN.md Sec. 3 "Rejection must stay unbiased").
+//    counting every candidate, docs/design.md section 3 "Rejection must stay unbiased").
 //  - radial4 yields copies() == 4 directions per u through sample_copies() (the ellipse's
 //    reflections, counter-clockwise from quadrant 0, each with pdf 1/Omega; invert_copy() is
 //    their inverse). sample(u) is a full-ellipse sample, the radial map's, so that an estimator

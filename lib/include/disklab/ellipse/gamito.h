@@ -3,7 +3,7 @@
 // solid angle of the square circumscribing the disk (Ureña et al. 2013, rectangle.h); those whose
 // hit point falls outside the disk are rejected.
 //
-// Two unbiased ways to use it (DESIGN.md Sec. 3, "Rejection must stay unbiased"):
+// Two unbiased ways to use it (docs/design.md section 3, "Rejection must stay unbiased"):
 //  - sample(u, rng): the first candidate from u, further ones from rng until one is accepted;
 //    the accepted direction is uniform on the disk's solid angle, pdf = 1/Omega;
 //  - propose(u): one candidate; valid only if accepted, with the PROPOSAL density 1/S_square.

@@ -1,13 +1,13 @@
 #pragma once
 // The spherical ellipse subtended by a disk at a shading point (Guillén et al. 2017, Sec. 3,
-// eqs. 3-5, 10, 12, 20), with the corrections of DESIGN.md Sec. 3.
+// eqs. 3-5, 10, 12, 20), with the corrections of docs/design.md section 3.
 //
 // LIT SIDE. The disk emits towards +normal. With z_d = -n (eq. 3), a point o sees the front face
 // when the disk lies ahead of it along z_d, i.e. when h = (o - c) . n > 0. A one-sided disk seen
 // from h <= 0 is empty (Omega = 0); a two-sided disk is mirrored (n -> -n) so that h = |h|; any
 // disk seen from its own plane (h == 0) is empty.
 //
-// FRAMES. R_d (eq. 3 with x and y swapped, DESIGN.md): z_d = -n (of the lit face),
+// FRAMES. R_d (eq. 3 with x and y swapped, docs/design.md): z_d = -n (of the lit face),
 // x_d = normalize(z_d x (c - o)), y_d = z_d x x_d. Then the disk centre is at (0, -e, h) in R_d
 // with e >= 0 its in-plane offset from the foot of o, and the tilt runs along y_d. On axis
 // (e == 0) x_d is any unit vector in the plane. R_e = (x_e, y_e, z_e): x_e = x_d,
@@ -89,7 +89,7 @@ struct SphericalEllipse {
   Vec3 to_world(const Vec3& local) const { return frame.to_world(local); }
   Vec3 to_local(const Vec3& world) const { return frame.to_local(world); }
 
-  // R_d = (x_d, y_d, z_d), eq. (3) with x and y swapped (DESIGN.md): z_d = -normal, x_d = x_e,
+  // R_d = (x_d, y_d, z_d), eq. (3) with x and y swapped (docs/design.md): z_d = -normal, x_d = x_e,
   // y_d = z_d x x_d.
   math::Frame disk_frame() const {
     math::Frame f;

@@ -7,7 +7,7 @@
 // which reproduces eq. (23) quadrant by quadrant (the mirroring of odd quadrants is the
 // "1 - 2(theta - pi/2)/pi" branch), and eps2 = rho^2 with eps2 = 0 at the centre is the
 // orientation under which the composition is concentric-like rather than inside out
-// (DESIGN.md Sec. 3).
+// (docs/design.md section 3).
 #include <cmath>
 
 #include "disklab/disk/concentric.h"

@@ -1,6 +1,6 @@
 #pragma once
 // What the spherical-ellipse maps need from the geometry, in one place: a thin adapter over
-// geometry.h (frame and shape, Guillén et al. 2017 Sec. 3 with the frame fix of DESIGN.md) and
+// geometry.h (frame and shape, Guillén et al. 2017 Sec. 3 with the frame fix of docs/design.md) and
 // solid_angle.h (the cancellation-free cumulative solid angles of the radial and parallel maps).
 //
 // The maps' root finding uses the parametric angle s of the PLANAR projected ellipse,

@@ -1,8 +1,8 @@
 #pragma once
 // The spherical ellipse's quadrants, shared by the radial family and the tabulated map
-// (DESIGN.md section 3, "Full ellipse from one quadrant"). The ellipse is mirror-symmetric about
-// the x_e and y_e planes; quadrant k (counter-clockwise from +x_e) holds eps1 in [k/4, (k+1)/4),
-// and odd quadrants are mirrored so that the maps stay continuous across the seams.
+// (docs/design.md section 3, "Full ellipse from one quadrant"). The ellipse is mirror-symmetric
+// about the x_e and y_e planes; quadrant k (counter-clockwise from +x_e) holds eps1 in [k/4,
+// (k+1)/4), and odd quadrants are mirrored so that the maps stay continuous across the seams.
 #include <algorithm>
 #include <cmath>
 

@@ -1,7 +1,7 @@
 #pragma once
 // The radial map of Guillén et al. 2017 (Sec. 3.3, eqs. 16-22), over the full ellipse.
 //
-// Conventions (DESIGN.md Sec. 3):
+// Conventions (docs/design.md section 3):
 //  - eps1 is the cumulative solid-angle fraction of the azimuth, counter-clockwise from +x_e
 //    towards +y_e. Quadrant k = floor(4 eps1), local fraction t = 4 eps1 - k, mirrored (1 - t)
 //    on odd quadrants, so the map is continuous across the seams;

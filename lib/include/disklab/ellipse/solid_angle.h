@@ -4,8 +4,9 @@
 //
 // WHY NOT THE PRINTED FORMS. Eq. (19) at phi = pi/2 subtracts two numbers close to pi/2 to get a
 // quadrant of area ~pi a b / 4, and eq. (11) subtracts F from (1 - n) Pi with a difference of
-// order b_t^2: both lose about two digits per decade of distance (DESIGN.md Sec. 3). They are
-// kept here (`*_printed`) to measure that loss. The production forms below have no cancellation:
+// order b_t^2: both lose about two digits per decade of distance (docs/design.md section 3). They
+// are kept here (`*_printed`) to measure that loss. The production forms below have no
+// cancellation:
 //
 //  - Total solid angle. Eq. (19) at pi/2, with the complete-integral relation
 //    Pi(n|m) + Pi(m/n|m) = K(m) + (pi/2) sqrt(n / ((1-n)(n-m)))  (DLMF 19.7.8; here

@@ -5,7 +5,7 @@
 // E), templated on the real type like Carlson's forms (elliptic_carlson.h) they are computed
 // from. elliptic.h includes both.
 //
-// CONVENTION (DESIGN.md section 3; parameter m, not modulus k):
+// CONVENTION (docs/design.md section 3; parameter m, not modulus k):
 //   F(phi|m)     = int_0^phi dt / sqrt(1 - m sin^2 t)
 //   Pi(n; phi|m) = int_0^phi dt / ((1 - n sin^2 t) sqrt(1 - m sin^2 t))
 // Boost's ellint_1(k, phi) / ellint_3(k, n, phi) take the MODULUS k = sqrt(m) (and the same n).
