@@ -29,6 +29,9 @@ struct ReportOptions {
   // Markdown a part adds to the index's claims section (paper claim, measured value, verdict);
   // null when the caller keeps no index.
   std::string* claims = nullptr;
+  // Markdown a part adds to the index's first screen: the answer a reader came for (which
+  // strategy and sequence, which map, at what error and cost); null when there is no index.
+  std::string* answers = nullptr;
 };
 
 struct Command {

@@ -50,8 +50,8 @@ std::string describe_files(const std::vector<std::string>& files) {
 
 int run_report(const ReportState& state) {
   namespace fs = std::filesystem;
-  std::string claims;
-  ReportOptions options{fs::path(state.out), state.quick, &claims};
+  std::string claims, answers;
+  ReportOptions options{fs::path(state.out), state.quick, &claims, &answers};
   std::error_code ec;
   fs::create_directories(options.dir, ec);
   if (ec) throw UsageError("--out: cannot create folder '" + state.out + "': " + ec.message());
@@ -91,7 +91,9 @@ int run_report(const ReportState& state) {
     parts_text += describe_files(written) + "\n";
     if (rc > worst) worst = rc;
   }
-  // The papers' claims first: what a reader of the report comes for.
+  // The answer first (which strategy and sequence, which map, at what error and cost), then
+  // the papers' claims, then every part's files.
+  if (!answers.empty()) index += "## The answer\n\n" + answers + "\n";
   if (!claims.empty()) index += "## Claims of the papers, measured here\n\n" + claims + "\n";
   index += parts_text;
   write_file_atomic(options.dir / "index.md", index);

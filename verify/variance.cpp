@@ -193,8 +193,60 @@ std::vector<ImageRow> image_rows(const VarianceResult& r) {
 
 struct Outputs {
   std::string csv, fits_csv, refs_csv, images_csv, cost_csv, newton_csv, json, markdown,
-      claims_markdown;
+      claims_markdown, answer_markdown;
 };
+
+// Relative RMS below this is the sum's rounding, not sampling error: a zero-variance estimator
+// (projected on unoccluded points). Ranked apart, since its efficiency is set by rounding.
+constexpr double kRoundingRelRms = 1e-12;
+
+// The report's first screen: per image and region, the map x sequence with the highest
+// efficiency at equal time (1 / (MSE x time per sample), the set-up amortized over spp samples),
+// as a multiple of area sampling's with the same sequence.
+std::string answer_markdown(const VarianceResult& r) {
+  const uint32_t spp = r.config.spp;
+  std::vector<std::pair<const study::CurveTable*, std::size_t>> columns;
+  for (std::size_t reg = 0; reg < r.image.axes.regions.size(); ++reg)
+    columns.emplace_back(&r.image, reg);
+  for (std::size_t reg = 0; reg < r.curves.axes.regions.size(); ++reg)
+    columns.emplace_back(&r.curves, reg);
+  const auto area = std::find(r.map_names.begin(), r.map_names.end(), "area");
+  std::string md = "| region | best map x sequence at equal time (" + std::to_string(spp) +
+                   " spp) | MSE | efficiency vs area | zero variance (rounding only) |\n"
+                   "| --- | --- | ---: | ---: | --- |\n";
+  for (const auto& [table, reg] : columns) {
+    const auto k = table->find_n(spp);
+    if (!k) continue;
+    double best_eff = 0.0, best_mse = 0.0, best_vs_area = 0.0;
+    std::string best_name, exact;
+    for (std::size_t m = 0; m < r.map_names.size(); ++m)
+      for (std::size_t q = 0; q < r.config.sequences.size(); ++q) {
+        const std::size_t curve = table->curve_index(reg, m, q);
+        const double mse = std::pow(table->rmse(curve, *k), 2);
+        if (table->rel_rmse(curve, *k) < kRoundingRelRms) {
+          if (exact.find(r.map_names[m]) == std::string::npos)
+            exact += (exact.empty() ? "" : ", ") + r.map_names[m];
+          continue;
+        }
+        const double eff = 1.0 / (mse * r.cost[m].ns_per_sample);
+        if (eff <= best_eff) continue;
+        best_eff = eff;
+        best_mse = mse;
+        best_name = r.map_names[m] + " x " + r.config.sequences[q];
+        best_vs_area = 0.0;
+        if (area != r.map_names.end()) {
+          const std::size_t a = static_cast<std::size_t>(area - r.map_names.begin());
+          const double area_mse = std::pow(table->rmse(table->curve_index(reg, a, q), *k), 2);
+          if (area_mse > 0.0) best_vs_area = eff * area_mse * r.cost[a].ns_per_sample;
+        }
+      }
+    md += "| " + table->axes.regions[reg] + " | " + (best_name.empty() ? "-" : best_name) +
+          " | " + fmt("%.2e", best_mse) + " | " +
+          (best_vs_area > 0.0 ? fmt("%.3g", best_vs_area) : std::string("-")) + " | " +
+          (exact.empty() ? std::string("-") : exact) + " |\n";
+  }
+  return md;
+}
 
 std::string headline(const VarianceResult& r, const std::vector<ImageRow>& rows) {
   std::string md = "| map |";
@@ -450,6 +502,7 @@ Outputs make_outputs(const VarianceResult& r) {
   j["claims"] = claims_json(claims, outcomes);
   o.json = j.dump(1) + "\n";
 
+  o.answer_markdown = answer_markdown(r);
   o.claims_markdown = study::claims_markdown(
       claims, outcomes, study::guillen_sections(),
       "MSE ratios are of image MSEs (column image) or of the regions' MSE over their 4 x 4 "
@@ -593,6 +646,10 @@ int report_variance(const ReportOptions& options) {
   const VarianceResult r = run_study(make_config(s));
   const Outputs o = make_outputs(r);
   write_outputs(options.dir, r, o, true);
+  if (options.answers)
+    *options.answers += "### Which map (Guillén et al.'s study; full tables in "
+                        "[variance.md](variance.md))\n\n" +
+                        o.answer_markdown + "\n";
   if (options.claims)
     *options.claims +=
         "### Guillén et al. (`disklab variance" + std::string(options.quick ? " --quick" : "") +
