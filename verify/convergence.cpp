@@ -196,10 +196,10 @@ std::string headline_markdown(const ConvergenceResult& r,
 std::string answer_markdown(const ConvergenceResult& r, const std::vector<study::CurveFit>& fits) {
   const auto& c = r.config;
   const std::size_t last = c.ns.size() - 1;
-  std::string md = "| region | best strategy x sequence | RMS at N = " +
-                   std::to_string(c.ns.back()) +
-                   " | slope | best one-copy strategy (RMS ratio to the best) |\n"
-                   "| --- | --- | ---: | ---: | --- |\n";
+  std::string md =
+      "| region | best strategy x sequence | RMS at N = " + std::to_string(c.ns.back()) +
+      " | slope | best one-copy strategy (RMS ratio to the best) |\n"
+      "| --- | --- | ---: | ---: | --- |\n";
   for (std::size_t reg = 0; reg < c.regions.size(); ++reg) {
     std::optional<std::size_t> best, best_one_copy;
     for (std::size_t st = 0; st < c.strategies.size(); ++st) {
@@ -395,9 +395,10 @@ int report_convergence(const ReportOptions& options) {
   const Outputs o = make_outputs(r);
   write_outputs(options.dir, r, o, true);
   if (options.answers)
-    *options.answers += "### Which strategy and sequence (Christensen's memo; full tables in "
-                        "[convergence.md](convergence.md))\n\n" +
-                        o.answer_markdown + "\n";
+    *options.answers +=
+        "### Which strategy and sequence (Christensen's memo; full tables in "
+        "[convergence.md](convergence.md))\n\n" +
+        o.answer_markdown + "\n";
   if (options.claims)
     *options.claims += "### Christensen's memo (`disklab convergence" +
                        std::string(options.quick ? " --quick" : "") + "`, " +

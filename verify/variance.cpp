@@ -240,8 +240,8 @@ std::string answer_markdown(const VarianceResult& r) {
           if (area_mse > 0.0) best_vs_area = eff * area_mse * r.cost[a].ns_per_sample;
         }
       }
-    md += "| " + table->axes.regions[reg] + " | " + (best_name.empty() ? "-" : best_name) +
-          " | " + fmt("%.2e", best_mse) + " | " +
+    md += "| " + table->axes.regions[reg] + " | " + (best_name.empty() ? "-" : best_name) + " | " +
+          fmt("%.2e", best_mse) + " | " +
           (best_vs_area > 0.0 ? fmt("%.3g", best_vs_area) : std::string("-")) + " | " +
           (exact.empty() ? std::string("-") : exact) + " |\n";
   }
@@ -647,9 +647,10 @@ int report_variance(const ReportOptions& options) {
   const Outputs o = make_outputs(r);
   write_outputs(options.dir, r, o, true);
   if (options.answers)
-    *options.answers += "### Which map (Guillén et al.'s study; full tables in "
-                        "[variance.md](variance.md))\n\n" +
-                        o.answer_markdown + "\n";
+    *options.answers +=
+        "### Which map (Guillén et al.'s study; full tables in "
+        "[variance.md](variance.md))\n\n" +
+        o.answer_markdown + "\n";
   if (options.claims)
     *options.claims +=
         "### Guillén et al. (`disklab variance" + std::string(options.quick ? " --quick" : "") +
