@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Contract of `disklab report --quick` (verify/report.cpp): every registered part runs and says
-# "ok" in index.md, the papers' claims table comes first, every file the index names exists and
-# is non-empty, PNGs are PNGs (when /usr/bin/python3 has matplotlib), a second run into the
+# "ok" in index.md, the answer (best strategy x sequence, best map per region) opens it and the
+# papers' claims follow, every file the index names exists and is non-empty, PNGs are PNGs (when
+# /usr/bin/python3 has matplotlib), a second run into the
 # same folder works, and a folder that cannot be created is a usage error (exit 2, one line).
 # Usage: bash report_contract.sh <path-to-disklab>
 set -u
@@ -26,6 +27,19 @@ claims_line=$(grep -n "^## Claims of the papers" "$INDEX" | cut -d: -f1)
 first_part=$(grep -n '^## `' "$INDEX" | head -1 | cut -d: -f1)
 [[ -n $claims_line && -n $first_part && $claims_line -lt $first_part ]] ||
   fail "the claims section is not before the parts"
+# The answer opens the index, before the claims: per region the best strategy x sequence
+# (convergence) and the best map at equal time (variance), each with a number.
+answer_line=$(grep -n "^## The answer" "$INDEX" | cut -d: -f1)
+[[ -n $answer_line && -n $claims_line && $answer_line -lt $claims_line ]] ||
+  fail "index.md does not open with the answer before the claims"
+for region in lit-axis lit-off penumbra; do
+  grep -qE "^\| $region \| [a-z0-9-]+ x [a-z0-9-]+ \| [0-9.]+e-[0-9]+ \|" "$INDEX" ||
+    fail "the answer has no strategy x sequence row for $region"
+done
+for region in image near mid far; do
+  grep -qE "^\| $region \| [a-z0-9-]+ x [a-z0-9-]+ \| [0-9.]+e[-+][0-9]+ \| [0-9.e+]+ \|" "$INDEX" ||
+    fail "the answer has no map row for $region"
+done
 if grep -q "FAILED" "$INDEX"; then fail "index.md reports a failed part"; fi
 # Every linked or embedded file exists and is non-empty.
 names=$(grep -o '](\([^)]*\))' "$INDEX" | sed 's/^](\(.*\))$/\1/' | sort -u)
