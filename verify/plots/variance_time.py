@@ -13,6 +13,10 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 STYLES = ("-", "--", ":", "-.")
+# An RMS this small is the estimate's rounding (irradiances here are of order 1), not sampling
+# error: a zero-variance map (projected where unoccluded). Its curve would set the axis range
+# and squeeze the others, so it is named in a note instead of drawn.
+ROUNDING_RMS = 1e-12
 
 
 def main():
@@ -40,15 +44,26 @@ def main():
                              squeeze=False)
     for i, region in enumerate(regions):
         ax = axes[0][i]
+        floor = {}  # map -> largest RMS of its curves that sit at the rounding level
         for j, m in enumerate(maps):
             setup, per = cost.get(m, (0.0, 0.0))
+            labelled = False
             for k, q in enumerate(seqs):
                 pts = sorted(curves.get((region, m, q), []))
                 if not pts:
                     continue
+                if max(e for _, e in pts) < ROUNDING_RMS:
+                    floor[m] = max(floor.get(m, 0.0), max(e for _, e in pts))
+                    continue
                 t = [(setup + n * per) * 1e-3 for n, _ in pts]
                 ax.loglog(t, [e for _, e in pts], color=cmap(j % 10), ls=STYLES[k % len(STYLES)],
-                          lw=1.1, label=m if k == 0 else None)
+                          lw=1.1, label=None if labelled else m)
+                labelled = True
+        if floor:
+            note = "; ".join("%s: zero variance, RMS <= %.0e (rounding), not drawn" % (m, e)
+                             for m, e in floor.items())
+            ax.text(0.99, 0.99, note, transform=ax.transAxes, ha="right", va="top", fontsize=7,
+                    color="0.3")
         ax.set_title(region)
         ax.set_xlabel("time per shading point (microseconds): set-up + N samples")
         ax.set_ylabel("RMS error")
