@@ -299,7 +299,7 @@ template <class F>
 // its own).
 template <class A, class M>
 [[gnu::noinline]] int draw_out_of_line(const M& m, const Point2* u, int n, double& sink) {
-  const M here = m;
+  const M here = m;  // NOLINT(performance-unnecessary-copy-initialization): the copy is the point
   double here_sink = 0.0;
   const int drawn = A::draw(here, u, n, here_sink);
   sink += here_sink;
@@ -574,7 +574,7 @@ void print_summary(const Results& values) {
   std::printf("%-44s %9s %8s %9s %9s %7s %9s\n", "benchmark", "ns", "x lean", "x concen", "x polar",
               "evals", "q_err");
   for (const auto& [name, v] : values) {
-    const auto get = [&v](const char* k) { return disklab::bench::counter(v, k); };
+    const auto get = [&c = v](const char* k) { return disklab::bench::counter(c, k); };
     std::printf("%-44s %9.1f %8.2f", name.c_str(), get("ns"), get("ratio_to_lean"));
     if (get("ratio_to_concentric") >= 0)
       std::printf(" %9.1f %9.1f", get("ratio_to_concentric"), get("ratio_to_polar"));

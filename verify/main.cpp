@@ -39,7 +39,7 @@ void check_option_values(const CLI::App& app) {
 }
 }  // namespace
 
-int main(int argc, char** argv) {
+static int run_cli(int argc, char** argv) {
   using namespace disklab::cli;
   CLI::App app{
       "disklab: sample disk-shaped area lights, and prove the samplers.\n"
@@ -105,4 +105,16 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "disklab: internal error: %s\n", e.what());
     return 1;
   }
+}
+
+// Building the app can throw too (an allocation, a registry clash): no exception leaves main.
+int main(int argc, char** argv) {
+  try {
+    return run_cli(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "disklab: internal error: %s\n", e.what());
+  } catch (...) {
+    std::fprintf(stderr, "disklab: internal error: unknown exception\n");
+  }
+  return 1;
 }

@@ -127,8 +127,8 @@ std::vector<Spectrum> radial_spectra(const std::vector<std::string>& names, uint
     const double two_pi = 6.283185307179586476925;
     for (uint32_t i = 0; i < count; ++i) {
       const Point2 p = seq->at(i);
-      for (int f = -reach; f <= reach; ++f)
-        ex[static_cast<std::size_t>(f + reach)] = std::polar(1.0, -two_pi * f * p.x);
+      for (std::size_t k = 0; k < ex.size(); ++k)  // frequency f = k - reach
+        ex[k] = std::polar(1.0, -two_pi * (static_cast<int>(k) - reach) * p.x);
       for (int f = 0; f <= reach; ++f)
         ey[static_cast<std::size_t>(f)] = std::polar(1.0, -two_pi * f * p.y);
       for (int fy = 0; fy <= reach; ++fy)

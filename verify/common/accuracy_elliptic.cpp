@@ -137,8 +137,9 @@ EllipticAccuracy elliptic_accuracy(const std::filesystem::path& reference_dir) {
   // (fma), and 1 - m' = (1 - m_hi) - m_lo is passed as the complement, so our value is ours at
   // exactly m' (within our 2 ulp). Rows where k rounds to 1 (m' = 1, outside the domain) are left
   // out.
-  auto at_boost_m = [](std::vector<Row> rows, bool pi) {
+  auto at_boost_m = [](const std::vector<Row>& rows, bool pi) {
     std::vector<Row> out;
+    out.reserve(rows.size());
     for (Row r : rows) {
       const double k = std::sqrt(r.m);
       const double m_hi = k * k, m_lo = std::fma(k, k, -m_hi);
@@ -153,6 +154,7 @@ EllipticAccuracy elliptic_accuracy(const std::filesystem::path& reference_dir) {
   const auto f_at_k = at_boost_m(f_rows, false), pi_at_k = at_boost_m(pi_rows, true);
   const std::string kSubsetAtK = "vs own at Boost's m = k^2";
   std::vector<Stats> all;
+  all.reserve(2 * (f_impls.size() + pi_impls.size()) + 2);  // every row pushed below, at most
   for (const auto& [name, eval] : f_impls)
     all.push_back(measure(f_rows, "F", name, "all rows", eval));
   for (const auto& [name, eval] : pi_impls)

@@ -97,7 +97,7 @@ nlohmann::json claims_json(const std::vector<study::Claim>& claims,
 
 std::filesystem::path check_out_dir(const std::string& out) {
   if (out.empty()) throw UsageError("--out: empty folder name");
-  const std::filesystem::path dir(out);
+  std::filesystem::path dir(out);
   std::error_code ec;
   if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
     throw UsageError("--out: '" + out + "' exists and is not a folder");

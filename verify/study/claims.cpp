@@ -142,7 +142,7 @@ Opt log_ratio_at(const CurveTable& r, std::size_t a, std::size_t b, std::size_t 
 
 namespace measures {
 
-Measure slope(std::string strategy, std::string sequence) {
+Measure slope(const std::string& strategy, const std::string& sequence) {
   return [=](const CurveTable& r, std::size_t region, Weights w) -> Opt {
     const auto c = curve(r, region, strategy, sequence);
     if (!c) return std::nullopt;
@@ -150,7 +150,7 @@ Measure slope(std::string strategy, std::string sequence) {
   };
 }
 
-Measure best_slope(std::string strategy) {
+Measure best_slope(const std::string& strategy) {
   return [=](const CurveTable& r, std::size_t region, Weights w) -> Opt {
     Opt best;
     for (const std::string& q : r.axes.sequences) {
@@ -167,7 +167,8 @@ Measure constant(std::optional<double> value) {
   return [=](const CurveTable&, std::size_t, Weights) { return value; };
 }
 
-Measure slope_difference(std::string strategy_a, std::string strategy_b, std::string sequence) {
+Measure slope_difference(const std::string& strategy_a, const std::string& strategy_b,
+                         const std::string& sequence) {
   return [=](const CurveTable& r, std::size_t region, Weights w) -> Opt {
     const auto a = curve(r, region, strategy_a, sequence),
                b = curve(r, region, strategy_b, sequence);
@@ -178,8 +179,8 @@ Measure slope_difference(std::string strategy_a, std::string strategy_b, std::st
   };
 }
 
-Measure ratio_at(std::string strategy_a, std::string sequence_a, std::string strategy_b,
-                 std::string sequence_b, uint32_t n) {
+Measure ratio_at(const std::string& strategy_a, const std::string& sequence_a,
+                 const std::string& strategy_b, const std::string& sequence_b, uint32_t n) {
   return [=](const CurveTable& r, std::size_t region, Weights w) -> Opt {
     const auto a = curve(r, region, strategy_a, sequence_a);
     const auto b = curve(r, region, strategy_b, sequence_b);
@@ -191,8 +192,8 @@ Measure ratio_at(std::string strategy_a, std::string sequence_a, std::string str
   };
 }
 
-Measure mean_ratio(std::string strategy_a, std::string sequence_a, std::string strategy_b,
-                   std::string sequence_b) {
+Measure mean_ratio(const std::string& strategy_a, const std::string& sequence_a,
+                   const std::string& strategy_b, const std::string& sequence_b) {
   return [=](const CurveTable& r, std::size_t region, Weights w) -> Opt {
     const auto a = curve(r, region, strategy_a, sequence_a);
     const auto b = curve(r, region, strategy_b, sequence_b);
@@ -201,8 +202,8 @@ Measure mean_ratio(std::string strategy_a, std::string sequence_a, std::string s
   };
 }
 
-Measure crossover(std::string strategy_a, std::string sequence_a, std::string strategy_b,
-                  std::string sequence_b) {
+Measure crossover(const std::string& strategy_a, const std::string& sequence_a,
+                  const std::string& strategy_b, const std::string& sequence_b) {
   return [=](const CurveTable& r, std::size_t region, Weights w) -> Opt {
     const auto a = curve(r, region, strategy_a, sequence_a);
     const auto b = curve(r, region, strategy_b, sequence_b);
@@ -225,8 +226,8 @@ Measure crossover(std::string strategy_a, std::string sequence_a, std::string st
   };
 }
 
-Measure sample_ratio(std::string strategy_a, std::string sequence_a, std::string strategy_b,
-                     std::string sequence_b, uint32_t n) {
+Measure sample_ratio(const std::string& strategy_a, const std::string& sequence_a,
+                     const std::string& strategy_b, const std::string& sequence_b, uint32_t n) {
   return [=](const CurveTable& r, std::size_t region, Weights w) -> Opt {
     const auto a = curve(r, region, strategy_a, sequence_a);
     const auto b = curve(r, region, strategy_b, sequence_b);
@@ -259,8 +260,8 @@ const std::vector<std::string> kPenumbra = {"penumbra"};
 
 // Geometric mean over the fit range of rmse(strategy, seq) / min over `others` of rmse(other,
 // seq): how a strategy compares with the best of the alternatives.
-Measure ratio_to_best_other(std::string strategy, std::string sequence,
-                            std::vector<std::string> others) {
+Measure ratio_to_best_other(const std::string& strategy, const std::string& sequence,
+                            const std::vector<std::string>& others) {
   return [=](const CurveTable& r, std::size_t region, Weights w) -> Opt {
     const auto a = curve(r, region, strategy, sequence);
     if (!a) return std::nullopt;
@@ -275,7 +276,7 @@ Measure ratio_to_best_other(std::string strategy, std::string sequence,
 
 // Geometric mean over the fit range of min over sequences of rmse(strategy_a, .) divided by the
 // same for the best of `strategies_b`: the best curve of one strategy against the best of others.
-Measure best_vs_best(std::string strategy_a, std::vector<std::string> strategies_b) {
+Measure best_vs_best(const std::string& strategy_a, const std::vector<std::string>& strategies_b) {
   return [=](const CurveTable& r, std::size_t region, Weights w) -> Opt {
     const auto& qs = r.axes.sequences;
     return fit_range_geomean(r, [&](std::size_t k) -> Opt {
@@ -288,8 +289,8 @@ Measure best_vs_best(std::string strategy_a, std::vector<std::string> strategies
 }
 
 // Geometric mean over the fit range of rmse(strategy, sequence) / the median over `others`.
-Measure ratio_to_median(std::string strategy, std::string sequence,
-                        std::vector<std::string> others) {
+Measure ratio_to_median(const std::string& strategy, const std::string& sequence,
+                        const std::vector<std::string>& others) {
   return [=](const CurveTable& r, std::size_t region, Weights w) -> Opt {
     const auto a = curve(r, region, strategy, sequence);
     if (!a) return std::nullopt;
@@ -601,7 +602,7 @@ std::string format_value(const Claim& c, const ClaimOutcome& o) {
   return s;
 }
 
-std::string escape(std::string s) {
+std::string escape(const std::string& s) {
   std::string out;
   for (char ch : s) {
     if (ch == '|')

@@ -89,27 +89,28 @@ std::string claims_markdown(const std::vector<Claim>& claims,
 // is missing from the run. A "strategy" is a curve table's method.
 namespace measures {
 // Slope of one curve.
-Measure slope(std::string strategy, std::string sequence);
+Measure slope(const std::string& strategy, const std::string& sequence);
 // The steepest (most negative) slope of `strategy` over every sequence of the run.
-Measure best_slope(std::string strategy);
+Measure best_slope(const std::string& strategy);
 // slope(a) - slope(b) for one sequence.
-Measure slope_difference(std::string strategy_a, std::string strategy_b, std::string sequence);
+Measure slope_difference(const std::string& strategy_a, const std::string& strategy_b,
+                         const std::string& sequence);
 // A value measured once (bootstrap replicates see the same value).
 Measure constant(std::optional<double> value);
 // rmse(a) / rmse(b) at N = n (n = 0: the run's smallest N).
-Measure ratio_at(std::string strategy_a, std::string sequence_a, std::string strategy_b,
-                 std::string sequence_b, uint32_t n);
+Measure ratio_at(const std::string& strategy_a, const std::string& sequence_a,
+                 const std::string& strategy_b, const std::string& sequence_b, uint32_t n);
 // Geometric mean over the fit range of rmse(a) / rmse(b).
-Measure mean_ratio(std::string strategy_a, std::string sequence_a, std::string strategy_b,
-                   std::string sequence_b);
+Measure mean_ratio(const std::string& strategy_a, const std::string& sequence_a,
+                   const std::string& strategy_b, const std::string& sequence_b);
 // First N (interpolated in log N) at which curve b's rmse falls to curve a's; +infinity if it
 // does not within the run, 0 if it is already below at the smallest N.
-Measure crossover(std::string strategy_a, std::string sequence_a, std::string strategy_b,
-                  std::string sequence_b);
+Measure crossover(const std::string& strategy_a, const std::string& sequence_a,
+                  const std::string& strategy_b, const std::string& sequence_b);
 // n / N_b, where N_b (interpolated in log-log) is the sample count at which curve b reaches the
 // error curve a has at N = n: how many times fewer samples b needs for that error.
-Measure sample_ratio(std::string strategy_a, std::string sequence_a, std::string strategy_b,
-                     std::string sequence_b, uint32_t n);
+Measure sample_ratio(const std::string& strategy_a, const std::string& sequence_a,
+                     const std::string& strategy_b, const std::string& sequence_b, uint32_t n);
 }  // namespace measures
 
 }  // namespace disklab::study

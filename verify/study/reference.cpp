@@ -337,7 +337,8 @@ ReferenceValue irradiance_quadrature(const Scene& scene, const ShadingPoint& sp,
       coarse += v.value;
     }
   }
-  const double tol = rel_tol * std::fabs(coarse) / std::max<std::size_t>(pieces.size(), 1);
+  const double tol =
+      rel_tol * std::fabs(coarse) / static_cast<double>(std::max<std::size_t>(pieces.size(), 1));
   double value = 0.0, rounding = 0.0;
   for (const Piece& p : pieces) {
     const Panel v = in.adapt(p.ta, p.tb, p.lo, p.hi, p.first, tol, 0);

@@ -22,7 +22,7 @@ Opt mse(const CurveTable& t, std::size_t region, const std::string& map, const s
   return e * e;
 }
 
-Measure mse_ratio(std::string a, std::string b, std::string seq, uint32_t n) {
+Measure mse_ratio(const std::string& a, const std::string& b, const std::string& seq, uint32_t n) {
   return [=](const CurveTable& t, std::size_t region, Weights w) -> Opt {
     const Opt ma = mse(t, region, a, seq, n, w), mb = mse(t, region, b, seq, n, w);
     if (!ma || !mb || !(*mb > 0.0)) return std::nullopt;
@@ -32,7 +32,7 @@ Measure mse_ratio(std::string a, std::string b, std::string seq, uint32_t n) {
 
 // Fig. 7's ordering radial < {parallel, ld-radial} < gamito < area: how many of its five
 // pairwise inequalities the measured MSEs violate.
-Measure ordering_violations(std::string seq, uint32_t n) {
+Measure ordering_violations(const std::string& seq, uint32_t n) {
   return [=](const CurveTable& t, std::size_t region, Weights w) -> Opt {
     const std::vector<std::pair<std::string, std::string>> less = {{"radial", "parallel"},
                                                                    {"radial", "ld-radial"},
@@ -51,7 +51,7 @@ Measure ordering_violations(std::string seq, uint32_t n) {
 
 // Geometric mean over the table's N of max / min MSE among `maps` with sequence `seq` (the
 // image table has one N).
-Measure mse_spread(std::vector<std::string> maps, std::string seq) {
+Measure mse_spread(const std::vector<std::string>& maps, const std::string& seq) {
   return [=](const CurveTable& t, std::size_t region, Weights w) -> Opt {
     double log_sum = 0.0;
     for (uint32_t n : t.ns()) {

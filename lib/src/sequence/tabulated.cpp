@@ -205,7 +205,7 @@ class Pmj02Builder {
     pts_[0] = {rng_.next_u32(), rng_.next_u32()};
     grid_.insert(to_unit(pts_[0].x), to_unit(pts_[0].y));
     for (uint32_t i = 1; i < n; ++i) {
-      if (std::has_single_bit(i)) start_level(std::bit_width(i));
+      if (std::has_single_bit(i)) start_level(static_cast<int>(std::bit_width(i)));
       place(i);
     }
     return fallbacks_;
