@@ -138,13 +138,21 @@ Config nudged(const Config& c, Point2 p) {
 // draw(m, u, n, sink) maps the n square points u[0..n) and returns the number of samples made.
 // make(c, light) gets the configuration and its lean light (only the lean baseline uses it).
 
+// Everything a renderer reads from a light sample, maps and baselines alike: the direction, the
+// point on the light, the pdf and the validity. Summing all of them keeps the optimizer from
+// dropping any part of either side's work.
+template <class S>
+inline double consume(const S& s) {
+  return s.direction.x() + s.direction.y() + s.direction.z() + s.point.x() + s.point.y() +
+         s.point.z() + s.pdf + (s.valid ? 1.0 : 0.0);
+}
+
 template <class M>
 struct Plain {  // maps with make(Disk, o) and sample(Point2) -> EllipseSample
   static M make(const Config& c, const ell::LeanDiskLight&) { return M::make(c.disk(), c.o); }
   static int draw(const M& m, const Point2* u, int n, double& sink) {
     for (int i = 0; i < n; ++i) {
-      const auto s = m.sample(u[i]);
-      sink += s.direction.x() + s.pdf;
+      sink += consume(m.sample(u[i]));
     }
     return n;
   }
@@ -171,7 +179,7 @@ struct Radial4Adapter {
     for (int i = 0; i < n / 4; ++i) {
       const auto s = m.sample4(u[i]);
       for (const auto& x : s)
-        sink += x.direction.x() + x.pdf;
+        sink += consume(x);
     }
     return (n / 4) * 4;
   }
@@ -184,8 +192,7 @@ struct GamitoAdapter {
   static int draw(const ell::GamitoSampler& m, const Point2* u, int n, double& sink) {
     static thread_local disklab::sequence::Pcg32 rng(7);
     for (int i = 0; i < n; ++i) {
-      const ell::EllipseSample s = m.sample(u[i], rng);
-      sink += s.direction.x() + s.pdf;
+      sink += consume(m.sample(u[i], rng));
     }
     return n;
   }
@@ -270,6 +277,27 @@ double median(std::vector<double>& v) {
 
 inline double seconds(Clock::time_point a, Clock::time_point b) {
   return std::chrono::duration<double>(b - a).count();
+}
+
+// Times f and g back to back, f first on even batches and g first on odd ones, so that what the
+// first leaves behind (caches, branch history, clock frequency) favours neither side; returns
+// {seconds of f, seconds of g}.
+template <class F, class G>
+std::pair<double, double> timed_pair(long batch, F&& f, G&& g) {
+  const bool f_first = batch % 2 == 0;
+  const auto t0 = Clock::now();
+  if (f_first)
+    f();
+  else
+    g();
+  const auto t1 = Clock::now();
+  if (f_first)
+    g();
+  else
+    f();
+  const auto t2 = Clock::now();
+  return f_first ? std::pair{seconds(t0, t1), seconds(t1, t2)}
+                 : std::pair{seconds(t1, t2), seconds(t0, t1)};
 }
 
 // ---- stack positions ----
@@ -369,15 +397,21 @@ void BM_Sample(benchmark::State& state, const Config& c) {
   long n_map = 0;
   int per_batch = kBatch;
   int offset = 0, position = 0;
+  long batches = 0;
   for (auto _ : state) {
     const Point2* batch = u.data() + offset;
     offset = (offset + kBatch) % kPoints;
     const int k = position;
     position = (position + 1) % kStackOffsets;
-    const auto t0 = Clock::now();
-    per_batch = at_stack_offset(k, [&] { return draw_out_of_line<A>(m, batch, kBatch, sink); });
-    const auto t1 = Clock::now();
-    at_stack_offset(k, [&] { return draw_out_of_line<LeanA>(lean, batch, kBatch, sink); });
+    const auto [s_map, s_lean] = timed_pair(
+        batches++,
+        [&] {
+          per_batch =
+              at_stack_offset(k, [&] { return draw_out_of_line<A>(m, batch, kBatch, sink); });
+        },
+        [&] {
+          at_stack_offset(k, [&] { return draw_out_of_line<LeanA>(lean, batch, kBatch, sink); });
+        });
     const auto t2 = Clock::now();
     at_stack_offset(
         k, [&] { return draw_disk_out_of_line<disk::sample_concentric>(batch, kBatch, sink); });
@@ -386,11 +420,11 @@ void BM_Sample(benchmark::State& state, const Config& c) {
                     [&] { return draw_disk_out_of_line<disk::sample_polar>(batch, kBatch, sink); });
     const auto t4 = Clock::now();
     n_map += per_batch;
-    t_map.add(k, seconds(t0, t1));
-    t_lean.add(k, seconds(t1, t2));
+    t_map.add(k, s_map);
+    t_lean.add(k, s_lean);
     t_conc.add(k, seconds(t2, t3));
     t_polar.add(k, seconds(t3, t4));
-    state.SetIterationTime(seconds(t0, t1));
+    state.SetIterationTime(s_map);
     benchmark::DoNotOptimize(sink);
   }
   state.SetItemsProcessed(n_map);
@@ -433,20 +467,20 @@ void BM_Setup(benchmark::State& state, const Config& c) {
   long count = 0;
   const std::vector<Point2>& u = points();
   int offset = 0, position = 0;
+  long batches = 0;
   for (auto _ : state) {
     const Point2* p = u.data() + offset;
     offset = (offset + kMakes) % kPoints;
     const int k = position;
     position = (position + 1) % kStackOffsets;
-    const auto t0 = Clock::now();
-    at_stack_offset(k, [&] { return make_out_of_line<A>(c, p, kMakes, light); });
-    const auto t1 = Clock::now();
-    at_stack_offset(k, [&] { return make_out_of_line<LeanA>(c, p, kMakes, light); });
-    const auto t2 = Clock::now();
+    const auto [s_map, s_lean] = timed_pair(
+        batches++,
+        [&] { at_stack_offset(k, [&] { return make_out_of_line<A>(c, p, kMakes, light); }); },
+        [&] { at_stack_offset(k, [&] { return make_out_of_line<LeanA>(c, p, kMakes, light); }); });
     count += kMakes;
-    t_map.add(k, seconds(t0, t1));
-    t_lean.add(k, seconds(t1, t2));
-    state.SetIterationTime(seconds(t0, t1));
+    t_map.add(k, s_map);
+    t_lean.add(k, s_lean);
+    state.SetIterationTime(s_map);
   }
   state.SetItemsProcessed(count);
   const double m_map = t_map.typical(), m_lean = t_lean.typical();
@@ -466,21 +500,26 @@ void BM_Amortized(benchmark::State& state, const Config& c, int k) {
   int per_batch = reps * k;
   const std::vector<Point2>& u = points();
   int offset = 0, position = 0;
+  long batches = 0;
   for (auto _ : state) {
     const int at = position;
     position = (position + 1) % kStackOffsets;
-    const auto t0 = Clock::now();
-    per_batch = at_stack_offset(
-        at, [&] { return make_and_draw_out_of_line<A>(c, light, u, offset, reps, k, sink); });
-    const auto t1 = Clock::now();
-    at_stack_offset(
-        at, [&] { return make_and_draw_out_of_line<LeanA>(c, light, u, offset, reps, k, sink); });
-    const auto t2 = Clock::now();
+    const auto [s_map, s_lean] = timed_pair(
+        batches++,
+        [&] {
+          per_batch = at_stack_offset(
+              at, [&] { return make_and_draw_out_of_line<A>(c, light, u, offset, reps, k, sink); });
+        },
+        [&] {
+          at_stack_offset(at, [&] {
+            return make_and_draw_out_of_line<LeanA>(c, light, u, offset, reps, k, sink);
+          });
+        });
     offset = (offset + reps * k) % kPoints;
     samples += per_batch;
-    t_map.add(at, seconds(t0, t1));
-    t_lean.add(at, seconds(t1, t2));
-    state.SetIterationTime(seconds(t0, t1));
+    t_map.add(at, s_map);
+    t_lean.add(at, s_lean);
+    state.SetIterationTime(s_map);
     benchmark::DoNotOptimize(sink);
   }
   state.SetItemsProcessed(samples);
@@ -488,6 +527,66 @@ void BM_Amortized(benchmark::State& state, const Config& c, int k) {
   const double per_map = t_map.typical() / std::max(1, per_batch);
   const double per_lean = t_lean.typical() / (reps * k);
   state.counters["ns"] = per_map * 1e9;
+  state.counters["ratio_to_lean"] = per_map / per_lean;
+}
+
+// ---- plain mode: the loop a renderer writes ----
+// plain/<map>/<config>: per sample, each batch of kBatch points mapped by a loop inlined into
+// this function, with the map a local of its frame, no out-of-line wrapper and no stack offsets;
+// plain/<map>/<config>/<k>: the same for one make at a nudged shading point followed by k
+// samples. The lean baseline's identical loop alternates with the map's, batch by batch; times
+// are the medians of the batch times.
+template <class A>
+void BM_Plain(benchmark::State& state, const Config& c, int k) {
+  const ell::LeanDiskLight& light = lean_light(c);
+  const std::vector<Point2>& u = points();
+  const int reps = k > 0 ? std::max(1, kBatch / k) : 1;  // shading points per batch
+  const int per_point = k > 0 ? k : kBatch;              // samples per shading point
+  // One shading point: make (when k > 0: per point, at a nudged o) and draw per_point samples.
+  const auto run = [&](auto adapter, const auto& fixed, int offset, double& sink) {
+    using Ad = decltype(adapter);
+    int drawn = 0;
+    for (int r = 0; r < reps; ++r) {
+      const int at = (offset + r * per_point) % kPoints;
+      if (k > 0) {
+        const auto m = Ad::make(nudged(c, u[static_cast<std::size_t>(at)]), light);
+        drawn += Ad::draw(m, u.data() + at, per_point, sink);
+      } else {
+        drawn += Ad::draw(fixed, u.data() + at, per_point, sink);
+      }
+    }
+    return drawn;
+  };
+  const auto m = A::make(c, light);
+  const auto lean = LeanA::make(c, light);
+  if (!m.valid() || !lean.valid()) {
+    state.SkipWithError("invalid configuration");
+    return;
+  }
+  std::vector<double> t_map, t_lean;
+  double sink = 0.0;
+  long samples = 0;
+  int drawn = 0, offset = 0;
+  long batches = 0;
+  for (auto _ : state) {
+    double s_map = 0.0, s_lean = 0.0;
+    const auto [dt_map, dt_lean] = timed_pair(
+        batches++, [&] { drawn = run(A{}, m, offset, s_map); },
+        [&] { run(LeanA{}, lean, offset, s_lean); });
+    // Stays a multiple of per_point, which divides kPoints: no batch runs past the points.
+    offset = (offset + reps * per_point) % kPoints;
+    samples += drawn;
+    t_map.push_back(dt_map);
+    t_lean.push_back(dt_lean);
+    sink += s_map + s_lean;
+    state.SetIterationTime(dt_map);
+    benchmark::DoNotOptimize(sink);
+  }
+  state.SetItemsProcessed(samples);
+  const double per_map = median(t_map) / std::max(1, drawn);
+  const double per_lean = median(t_lean) / (reps * per_point);
+  state.counters["ns"] = per_map * 1e9;
+  state.counters["lean_ns"] = per_lean * 1e9;
   state.counters["ratio_to_lean"] = per_map / per_lean;
 }
 
@@ -516,6 +615,18 @@ void register_map(const std::string& name) {
       benchmark::RegisterBenchmark(
           ("amortized/" + name + "/" + c.name + "/" + std::to_string(k)).c_str(),
           [&c, k](benchmark::State& s) { BM_Amortized<A>(s, c, k); })
+          ->UseManualTime();
+    }
+  }
+  for (const Config& c : configs()) {
+    benchmark::RegisterBenchmark(("plain/" + name + "/" + c.name).c_str(),
+                                 [&c](benchmark::State& s) { BM_Plain<A>(s, c, 0); })
+        ->UseManualTime();
+    for (int k : {1, 256}) {
+      if (std::is_same_v<A, Radial4Adapter> && k < 4) continue;
+      benchmark::RegisterBenchmark(
+          ("plain/" + name + "/" + c.name + "/" + std::to_string(k)).c_str(),
+          [&c, k](benchmark::State& s) { BM_Plain<A>(s, c, k); })
           ->UseManualTime();
     }
   }

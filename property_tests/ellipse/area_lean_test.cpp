@@ -6,7 +6,9 @@
 
 #include <cmath>
 #include <limits>
+#include <vector>
 
+#include "disklab/disk/concentric.h"
 #include "disklab/ellipse/area.h"
 #include "disklab/ellipse/area_lean.h"
 #include "disklab/ellipse/solid_angle.h"
@@ -72,6 +74,34 @@ TEST(LeanArea, DensityMatchesThePreciseSamplerAndItsOwnPdf) {
       EXPECT_NEAR(off.dot(light.normal) / s.disk.radius, 0.0, 1e-13) << s.name;
       EXPECT_NEAR(lean.pdf(x.direction) / x.pdf, 1.0, kDensityRel) << s.name << " " << i;
       EXPECT_NEAR(precise.pdf(x.direction) / x.pdf, 1.0, kDensityRel) << s.name << " " << i;
+    }
+  }
+}
+
+// The sampler's two-region form (signed radius, angle in [-pi/4, pi/4]) is Shirley and Chiu's
+// concentric map, point for point: its disk coordinates match sample_concentric's four-region
+// form on every region, edges and centre included. Both round a few operations on numbers of
+// order 1 (the 4-region angle reaches 7 pi / 4), and the disk coordinates are read back from
+// world coordinates of magnitude |c| + r <= 5 here: 1e-14 is well above that rounding, far below
+// any wrong region (an error of order 1).
+TEST(LeanArea, TwoRegionFormIsTheConcentricMap) {
+  constexpr double kTol = 1e-14;
+  sequence::Pcg32 rng(3);
+  for (const Scene& s : {kScenes[0], kScenes[1]}) {
+    const LeanDiskLight light = LeanDiskLight::make(s.disk);
+    const LeanAreaSampler lean = LeanAreaSampler::make(light, Vec3::Zero());
+    const double r2 = s.disk.radius * s.disk.radius;
+    std::vector<Point2> us = {{0.5, 0.5}, {0.0, 0.0}, {1.0, 1.0}, {0.0, 1.0}, {1.0, 0.0},
+                              {0.5, 0.0}, {0.5, 1.0}, {0.0, 0.5}, {1.0, 0.5}, {0.75, 0.75}};
+    for (int i = 0; i < 4000; ++i)
+      us.push_back({rng.next_double(), rng.next_double()});
+    for (const Point2 u : us) {
+      const auto x = lean.sample(u);
+      ASSERT_TRUE(x.valid) << s.name;
+      const Vec3 off = x.point - s.disk.center;
+      const Point2 want = disk::sample_concentric(u);
+      EXPECT_NEAR(off.dot(light.t1) / r2, want.x, kTol) << s.name << " u " << u.x << "," << u.y;
+      EXPECT_NEAR(off.dot(light.t2) / r2, want.y, kTol) << s.name << " u " << u.x << "," << u.y;
     }
   }
 }

@@ -9,8 +9,9 @@
 // and the density's cosine is that of the rounded direction (absolute error ~eps, relative
 // eps / cos theta_l). Use AreaSampler where distant or grazing lights need full accuracy.
 #include <cmath>
+#include <limits>
 
-#include "disklab/disk/concentric.h"
+#include "disklab/disk/common.h"
 #include "disklab/ellipse/geometry.h"
 #include "disklab/math/constants.h"
 #include "disklab/math/frame.h"
@@ -67,20 +68,35 @@ struct LeanAreaSampler {
   }
   bool valid() const { return visible; }
 
+  // A concentric disk point in two regions (Shirley and Chiu's map in the signed-radius form of
+  // pbrt-v4 and Mitsuba 3): with (a, b) = 2u - 1, the coordinate of larger magnitude is the
+  // signed radius and psi = (pi/4) (smaller / larger) lies in [-pi/4, pi/4]; the region decides
+  // whether the point is r (cos psi, sin psi) or r (sin psi, cos psi). The angle never leaves
+  // [-pi/4, pi/4], where std::sin and std::cos take their shortest path. Then the world point,
+  // the direction and p(w) = |x - o|^2 / (A |cos theta_l|). Nothing is tested per sample but u
+  // and the finished pdf: `visible` already excludes the degenerate lights and shading points.
   LightSample sample(Point2 u) const {
     LightSample out;
     if (!visible || !(u.x >= 0.0 && u.x <= 1.0 && u.y >= 0.0 && u.y <= 1.0)) return out;
-    const Point2 d = disk::sample_concentric(u);
-    out.point = light->center + d.x * light->t1 + d.y * light->t2;
+    const double a = 2.0 * u.x - 1.0, b = 2.0 * u.y - 1.0;
+    double x = 0.0, y = 0.0;  // the centre, a = b = 0
+    if (std::abs(a) > std::abs(b)) {
+      const double psi = disk::kQuarterPi * (b / a);
+      x = a * std::cos(psi);
+      y = a * std::sin(psi);
+    } else if (b != 0.0) {
+      const double psi = disk::kQuarterPi * (a / b);
+      x = b * std::sin(psi);
+      y = b * std::cos(psi);
+    }
+    out.point = light->center + x * light->t1 + y * light->t2;
     const Vec3 v = out.point - o;
     const double dist2 = v.squaredNorm();
-    if (!(dist2 > 0.0) || !std::isfinite(dist2)) return out;
     out.direction = v / std::sqrt(dist2);
-    const double cos_l = std::abs(out.direction.dot(light->normal));
-    if (!(cos_l > 0.0)) return out;
-    out.pdf = dist2 * light->inv_area / cos_l;
-    out.valid = std::isfinite(out.pdf);
-    if (!out.valid) out.pdf = 0.0;
+    out.pdf = dist2 * light->inv_area / std::abs(out.direction.dot(light->normal));
+    // A distance that under- or overflows gives pdf 0, inf or NaN: no sample.
+    if (!(out.pdf > 0.0 && out.pdf < std::numeric_limits<double>::infinity())) return {};
+    out.valid = true;
     return out;
   }
 
