@@ -7,8 +7,10 @@
 //
 // Ratios, not absolute times. Every timed benchmark interleaves, batch by batch, the map under
 // test with the LEAN AREA BASELINE (area_lean.h: area sampling as a renderer writes it, a
-// concentric point in world space and d^2 / (A cos)), and with a concentric and a polar disk
-// sample, on the SAME square points; the times are accumulated separately and their quotients
+// two-region concentric point in world space and d^2 / (A cos)), and with a concentric and a
+// polar disk sample, on the SAME square points, the map and the baseline taking turns at going
+// first; every adapter sums the whole sample (direction, point, pdf, validity). The times are
+// accumulated separately and their quotients
 // reported as counters (`ratio_to_lean`, `ratio_to_concentric`, `ratio_to_polar`). Load from other
 // processes hits all of them alike and cancels in the quotients. `area` is disklab's precise
 // ellipse-frame area sampler (area.h), measured like any other map.
@@ -24,17 +26,20 @@
 //  - setup/<map>/<config>: one `make` per shading point, against the lean baseline's make.
 //  - amortized/<map>/<config>/<k>: one `make` followed by k samples, per sample, against the same
 //    for the lean baseline (k = 1, 16, 256): k = 1 is one light sample per shading point.
+//  - plain/<map>/<config> and plain/<map>/<config>/<k> (k = 1, 256): the same per sample and per
+//    make + k samples, timed as the renderer's own loop: inlined into the benchmark, the map a
+//    local of its frame, no out-of-line wrapper and no stack offsets.
 // Newton maps also report `evals`: mean evaluations of the cumulative solid angle per sample.
 // Maps that reproduce the exact radial map (radial, radial-fast, published-*) report `q_err`:
 // the largest error of their samples' quadrant fraction, |4 eps1(w) - 4 u.x| with eps1(w) the
 // exact radial map's inverse of the returned direction (accepted samples only).
 //
 // The summary after the table gives the median ratios, bytes per shading point, and checks the
-// targets of issues 5, 16 and 19.
+// targets listed in bench/targets.txt (scripts/bench --processes K aggregates them over K runs).
 //
 // Run: build/<preset>/bin/bench_maps --benchmark_repetitions=5
-// --benchmark_report_aggregates_only=true --benchmark_min_time=0.1 (about 25 minutes; add
-// --benchmark_filter='/(radial|published-radial-double)/' for a part).
+// --benchmark_report_aggregates_only=true --benchmark_min_time=0.1 (the longest of the programs;
+// add --benchmark_filter='/(radial|published-radial-double)/' for a part).
 #include <alloca.h>
 #include <benchmark/benchmark.h>
 
@@ -42,7 +47,10 @@
 #include <array>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -640,13 +648,89 @@ double ratio(const Results& values, const std::string& name, const char* key = "
   return it == values.end() ? -1.0 : disklab::bench::counter(it->second, key);
 }
 
-// Worst over the configurations of value(config) (configurations that were not run are skipped),
-// printed against the target.
+// One line of bench/targets.txt (its header has the format).
+struct Target {
+  std::string id, what;
+  double limit = 0.0;
+  std::string p, q;                  // benchmark patterns with {cfg}; q empty for a plain ratio
+  std::vector<std::string> configs;  // empty: every configuration
+};
+
+std::string trim(const std::string& s) {
+  const auto a = s.find_first_not_of(" \t"), b = s.find_last_not_of(" \t");
+  return a == std::string::npos ? "" : s.substr(a, b - a + 1);
+}
+
+std::vector<Target> load_targets(const char* path, std::string& error) {
+  std::vector<Target> out;
+  std::ifstream in(path);
+  if (!in) {
+    error = std::string("cannot open ") + path;
+    return out;
+  }
+  std::string line;
+  int number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    if (trim(line).empty() || trim(line)[0] == '#') continue;
+    std::vector<std::string> f;
+    std::stringstream ss(line);
+    for (std::string part; std::getline(ss, part, '|');)
+      f.push_back(trim(part));
+    std::stringstream form(f.size() == 4 ? f[3] : "");
+    std::string kind, word;
+    form >> kind;
+    Target t;
+    if (f.size() == 4) {
+      t.id = f[0];
+      t.what = f[2];
+      char* end = nullptr;
+      t.limit = std::strtod(f[1].c_str(), &end);
+      if (end == f[1].c_str() || *end != '\0' || !(t.limit > 0.0)) kind.clear();
+    }
+    if (kind == "ratio" || kind == "quotient") {
+      form >> t.p;
+      if (kind == "quotient") form >> t.q;
+      while (form >> word) {
+        if (word.rfind("configs=", 0) != 0) kind.clear();
+        std::stringstream cs(word.substr(8));
+        for (std::string c; std::getline(cs, c, ',');)
+          t.configs.push_back(c);
+      }
+    }
+    if ((kind != "ratio" && kind != "quotient") || t.p.empty() ||
+        (kind == "quotient" && t.q.empty())) {
+      error = std::string(path) + ":" + std::to_string(number) + ": not 'id | limit | what | form'";
+      return {};
+    }
+    out.push_back(t);
+  }
+  return out;
+}
+
+// A pattern's value at one configuration: {cfg} replaced, `:counter` read (default: the ratio to
+// the lean baseline); -1 when that benchmark was not run.
+double value_of(const Results& values, const std::string& pattern, const std::string& cfg) {
+  std::string name = pattern, key = "ratio_to_lean";
+  if (const auto colon = name.find(':'); colon != std::string::npos) {
+    key = name.substr(colon + 1);
+    name.resize(colon);
+  }
+  if (const auto at = name.find("{cfg}"); at != std::string::npos) name.replace(at, 5, cfg);
+  return ratio(values, name, key.c_str());
+}
+
+// Worst over the target's configurations of value(config) (configurations that were not run are
+// skipped), printed against the limit on one line that scripts/bench --processes reads:
+//   [id] what  worst X.XXx (config), target <= Lx: met|MISSED
 template <class F>
-void check(const char* what, double target, F value) {
+void check(const Target& t, F value) {
   double worst = -1.0;
   std::string where;
   for (const Config& c : configs()) {
+    if (!t.configs.empty() &&
+        std::find(t.configs.begin(), t.configs.end(), c.name) == t.configs.end())
+      continue;
     const double v = value(std::string(c.name));
     if (v < 0.0) continue;
     if (v > worst) {
@@ -654,28 +738,13 @@ void check(const char* what, double target, F value) {
       where = c.name;
     }
   }
+  const std::string label = "[" + t.id + "] " + t.what;
   if (worst < 0.0) {
-    std::printf("  %-58s not run\n", what);
+    std::printf("  %-78s not run\n", label.c_str());
     return;
   }
-  std::printf("  %-58s worst %6.2fx (%s), target <= %.2gx: %s\n", what, worst, where.c_str(),
-              target, worst <= target ? "met" : "MISSED");
-}
-
-// The quotient of two maps' ratios to the lean baseline in the same run, or -1.
-auto relative(const Results& v, const std::string& kind, const std::string& map,
-              const std::string& base, const std::string& suffix = "") {
-  return [&v, kind, map, base, suffix](const std::string& cfg) {
-    const double a = ratio(v, kind + "/" + map + "/" + cfg + suffix);
-    const double b = ratio(v, kind + "/" + base + "/" + cfg + suffix);
-    return a > 0.0 && b > 0.0 ? a / b : -1.0;
-  };
-}
-auto absolute(const Results& v, const std::string& kind, const std::string& map,
-              const std::string& suffix = "") {
-  return [&v, kind, map, suffix](const std::string& cfg) {
-    return ratio(v, kind + "/" + map + "/" + cfg + suffix);
-  };
+  std::printf("  %-78s worst %6.2fx (%s), target <= %.2gx: %s\n", label.c_str(), worst,
+              where.c_str(), t.limit, worst <= t.limit ? "met" : "MISSED");
 }
 
 void print_summary(const Results& values) {
@@ -708,31 +777,17 @@ void print_summary(const Results& values) {
       ell::RadialTable::shared().phi.size() * sizeof(double),
       pub::PublishedTable::shared().bytes());
 
-  std::printf("\nTargets (same-run ratios; worst configuration):\n");
-  const Results& v = values;
-  std::printf(" issue 16, to the lean baseline:\n");
-  check("radial, per sample over 256 (amortized/256)", 3.0,
-        absolute(v, "amortized", "radial", "/256"));
-  check("radial-fast, per sample over 256", 2.0, absolute(v, "amortized", "radial-fast", "/256"));
-  check("radial, per sample over 16", 4.0, absolute(v, "amortized", "radial", "/16"));
-  check("radial, set-up + 1 sample (amortized/1)", 10.0, absolute(v, "amortized", "radial", "/1"));
-  check("radial / published-radial-double, set-up + 1", 1.0,
-        relative(v, "amortized", "radial", "published-radial-double", "/1"));
-  check("radial / published-radial-default, set-up + 1", 1.0,
-        relative(v, "amortized", "radial", "published-radial-default", "/1"));
-  check("lean baseline set-up / its sample (setup/lean-area)", 1.0, [&v](const std::string& cfg) {
-    const double s = ratio(v, "setup/lean-area/" + cfg, "ns");
-    const double x = ratio(v, "sample/lean-area/" + cfg, "ns");
-    return s > 0.0 && x > 0.0 ? s / x : -1.0;
-  });
-  std::printf(" issue 5, to disklab's area sampler (quotients of the ratios above):\n");
-  check("radial / area, per sample", 6.0, relative(v, "sample", "radial", "area"));
-  check("radial-fast / area, per sample", 2.0, relative(v, "sample", "radial-fast", "area"));
-  check("tabulated / area, per sample", 1.3, relative(v, "sample", "tabulated", "area"));
-  std::printf(" issue 19:\n");
-  check("projected / radial, per sample", 3.0, relative(v, "sample", "projected", "radial"));
-  check("projected / radial, amortized/256", 3.0,
-        relative(v, "amortized", "projected", "radial", "/256"));
+  std::printf("\nTargets (same-run ratios; worst configuration; %s):\n", DISKLAB_BENCH_TARGETS);
+  std::string error;
+  const std::vector<Target> targets = load_targets(DISKLAB_BENCH_TARGETS, error);
+  if (!error.empty()) std::printf("  cannot read the targets: %s\n", error.c_str());
+  for (const Target& t : targets)
+    check(t, [&](const std::string& cfg) {
+      const double a = value_of(values, t.p, cfg);
+      if (t.q.empty()) return a;
+      const double b = value_of(values, t.q, cfg);
+      return a > 0.0 && b > 0.0 ? a / b : -1.0;
+    });
   std::printf(
       "Anchor (issue 5): the authors' Newton sample costs ~40-220x a polar disk sample;\n"
       "compare the 'x polar' column of sample/published-radial-*, sample/radial.\n");
