@@ -68,7 +68,8 @@ struct Quadrature {
       const Real L = tb - ta;
       if (!(L > 0)) continue;
       // v in [0, 1]; vc is the signed distance from v to the nearest end (a - v or b - v).
-      auto f = [&](const Real& v, const Real& vc) {
+      // The bindings are captured by name: clang rejects structured bindings in a [&] capture.
+      auto f = [&, ta = ta, ua = ua, tb = tb, ub = ub](const Real& v, const Real& vc) {
         if (v < 0.5) return L * g(sin(ta + L * abs(vc)), sin(ua - L * abs(vc)));
         return L * g(sin(tb - L * abs(vc)), sin(ub + L * abs(vc)));
       };
