@@ -694,8 +694,11 @@ std::vector<Target> load_targets(const char* path, std::string& error) {
       while (form >> word) {
         if (word.rfind("configs=", 0) != 0) kind.clear();
         std::stringstream cs(word.substr(8));
-        for (std::string c; std::getline(cs, c, ',');)
+        for (std::string c; std::getline(cs, c, ',');) {
+          const auto known = [&c](const Config& x) { return c == x.name; };
+          if (std::none_of(configs().begin(), configs().end(), known)) kind.clear();
           t.configs.push_back(c);
+        }
       }
     }
     if ((kind != "ratio" && kind != "quotient") || t.p.empty() ||

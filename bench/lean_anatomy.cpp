@@ -30,17 +30,7 @@ using disklab::ellipse::LeanDiskLight;
 using disklab::ellipse::LightSample;
 namespace disk = disklab::disk;
 
-// Two regions, signed radius, angle in [-pi/4, pi/4] (as in area_lean.h).
-Point2 concentric_2(Point2 u) {
-  const double a = 2.0 * u.x - 1.0, b = 2.0 * u.y - 1.0;
-  if (std::abs(a) > std::abs(b)) {
-    const double psi = disk::kQuarterPi * (b / a);
-    return {a * std::cos(psi), a * std::sin(psi)};
-  }
-  if (b == 0.0) return {0.0, 0.0};
-  const double psi = disk::kQuarterPi * (a / b);
-  return {b * std::sin(psi), b * std::cos(psi)};
-}
+using disklab::ellipse::detail::concentric_two_region;
 
 LightSample four_region(const LeanDiskLight& l, const Vec3& o, Point2 u) {
   LightSample out;
@@ -61,7 +51,7 @@ LightSample four_region(const LeanDiskLight& l, const Vec3& o, Point2 u) {
 
 LightSample bare(const LeanDiskLight& l, const Vec3& o, Point2 u) {
   LightSample out;
-  const Point2 d = concentric_2(u);
+  const Point2 d = concentric_two_region(u);
   out.point = l.center + d.x * l.t1 + d.y * l.t2;
   const Vec3 v = out.point - o;
   const double dist2 = v.squaredNorm();
@@ -118,7 +108,7 @@ int main(int argc, char** argv) {
   else if (variant == "concentric-4")
     loop([&](Point2 p) { return disk_only(disk::sample_concentric(p)); });
   else if (variant == "concentric-2")
-    loop([&](Point2 p) { return disk_only(concentric_2(p)); });
+    loop([&](Point2 p) { return disk_only(concentric_two_region(p)); });
   else {
     std::fprintf(stderr, "lean_anatomy: unknown variant '%s'\n", variant.c_str());
     return 2;

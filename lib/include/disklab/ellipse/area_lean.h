@@ -18,6 +18,24 @@
 
 namespace disklab::ellipse {
 
+namespace detail {
+// Shirley and Chiu's concentric map in two regions, the signed-radius form of pbrt-v4 and
+// Mitsuba 3: with (a, b) = 2u - 1, the coordinate of larger magnitude is the signed radius and
+// psi = (pi/4) (smaller / larger) lies in [-pi/4, pi/4]; the region decides whether the point is
+// r (cos psi, sin psi) or r (sin psi, cos psi). The angle never leaves [-pi/4, pi/4], where
+// std::sin and std::cos take their shortest path. u in [0,1]^2 (unchecked).
+inline Point2 concentric_two_region(Point2 u) {
+  const double a = 2.0 * u.x - 1.0, b = 2.0 * u.y - 1.0;
+  if (std::abs(a) > std::abs(b)) {
+    const double psi = disk::kQuarterPi * (b / a);
+    return {a * std::cos(psi), a * std::sin(psi)};
+  }
+  if (b == 0.0) return {0.0, 0.0};  // the centre, a = b = 0
+  const double psi = disk::kQuarterPi * (a / b);
+  return {b * std::sin(psi), b * std::cos(psi)};
+}
+}  // namespace detail
+
 // What the lean sampler returns: no ellipse frame, so no `local` direction.
 struct LightSample {
   Vec3 direction = Vec3::Zero();  // unit vector from the shading point towards the disk
@@ -68,28 +86,14 @@ struct LeanAreaSampler {
   }
   bool valid() const { return visible; }
 
-  // A concentric disk point in two regions (Shirley and Chiu's map in the signed-radius form of
-  // pbrt-v4 and Mitsuba 3): with (a, b) = 2u - 1, the coordinate of larger magnitude is the
-  // signed radius and psi = (pi/4) (smaller / larger) lies in [-pi/4, pi/4]; the region decides
-  // whether the point is r (cos psi, sin psi) or r (sin psi, cos psi). The angle never leaves
-  // [-pi/4, pi/4], where std::sin and std::cos take their shortest path. Then the world point,
-  // the direction and p(w) = |x - o|^2 / (A |cos theta_l|). Nothing is tested per sample but u
-  // and the finished pdf: `visible` already excludes the degenerate lights and shading points.
+  // The concentric disk point (detail::concentric_two_region), the world point, the direction and
+  // p(w) = |x - o|^2 / (A |cos theta_l|). Nothing is tested per sample but u and the finished
+  // pdf: `visible` already excludes the degenerate lights and shading points.
   LightSample sample(Point2 u) const {
     LightSample out;
     if (!visible || !(u.x >= 0.0 && u.x <= 1.0 && u.y >= 0.0 && u.y <= 1.0)) return out;
-    const double a = 2.0 * u.x - 1.0, b = 2.0 * u.y - 1.0;
-    double x = 0.0, y = 0.0;  // the centre, a = b = 0
-    if (std::abs(a) > std::abs(b)) {
-      const double psi = disk::kQuarterPi * (b / a);
-      x = a * std::cos(psi);
-      y = a * std::sin(psi);
-    } else if (b != 0.0) {
-      const double psi = disk::kQuarterPi * (a / b);
-      x = b * std::sin(psi);
-      y = b * std::cos(psi);
-    }
-    out.point = light->center + x * light->t1 + y * light->t2;
+    const Point2 d = detail::concentric_two_region(u);
+    out.point = light->center + d.x * light->t1 + d.y * light->t2;
     const Vec3 v = out.point - o;
     const double dist2 = v.squaredNorm();
     out.direction = v / std::sqrt(dist2);
