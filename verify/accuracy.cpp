@@ -111,7 +111,7 @@ int run_accuracy(const AccuracyState& s) {
   return produce(&dir, s.quick);
 }
 
-std::function<int()> setup_accuracy(CLI::App& sub) {
+std::function<int()> setup_accuracy(Options& sub) {
   auto state = std::make_shared<AccuracyState>();
   auto* out = sub.add_option("--out", state->out,
                              "Folder for accuracy.md, the CSVs and accuracy.png (created if "

@@ -1,6 +1,7 @@
 #pragma once
 // Subcommand registry of the `disklab` CLI. Each verify/<name>.cpp defines one subcommand and
-// registers it with a file-scope `Registrar`; main.cpp builds the CLI11 app from the registry.
+// registers it with a file-scope `Registrar`; main.cpp builds the CLI11 app from the registry
+// (the subcommands bind options through common/options.h and never see CLI11).
 //
 // Conventions every subcommand keeps (a contract scripts rely on):
 //  - numbers on stdout use fmt17 (%.17g) so they round-trip;
@@ -14,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
+#include "common/options.h"
 
 namespace disklab::cli {
 
@@ -39,7 +40,7 @@ struct Command {
   std::string summary;
   // Adds options to `sub` (binding them to state the command owns) and returns the action that
   // runs after a successful parse. The returned int is the exit code.
-  std::function<std::function<int()>(CLI::App& sub)> setup;
+  std::function<std::function<int()>(Options& sub)> setup;
   // Optional part of `disklab report`: writes this command's outputs into options.dir.
   std::function<int(const ReportOptions& options)> report;
 };

@@ -411,7 +411,7 @@ int report_convergence(const ReportOptions& options) {
   return 0;
 }
 
-std::function<int()> setup_convergence(CLI::App& sub) {
+std::function<int()> setup_convergence(Options& sub) {
   auto state = std::make_shared<ConvergenceState>();
   std::string strategies, sequences;
   for (const auto& n : disk::strategy_names())

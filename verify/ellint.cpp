@@ -153,15 +153,15 @@ int run(const EllintState& s, bool pi) {
 const Registrar kEllint{Command{
     "ellint",
     "Legendre elliptic integrals F(phi|m) and Pi(n;phi|m) (parameter m, not modulus k)",
-    [](CLI::App& sub) {
+    [](Options& sub) {
       auto state = std::make_shared<EllintState>();
       auto selected = std::make_shared<bool>(false);  // true: pi
       sub.require_subcommand(1);
-      CLI::App* f = sub.add_subcommand("f", "F(phi|m) = int_0^phi dt / sqrt(1 - m sin^2 t)");
-      CLI::App* p = sub.add_subcommand(
+      Options* f = sub.add_subcommand("f", "F(phi|m) = int_0^phi dt / sqrt(1 - m sin^2 t)");
+      Options* p = sub.add_subcommand(
           "pi", "Pi(n;phi|m) = int_0^phi dt / ((1 - n sin^2 t) sqrt(1 - m sin^2 t))");
-      for (CLI::App* c : {f, p}) {
-        CLI::Option* phi = c->add_option(
+      for (Options* c : {f, p}) {
+        Option* phi = c->add_option(
             "--phi", state->phi,
             "Amplitude: any finite real (outside [0, pi/2] reduced: the integral is odd and "
             "I(phi + j pi) = I(phi) + 2j I(pi/2))");

@@ -1,8 +1,11 @@
 // `disklab`: accuracy reports, the papers' experiments and single evaluations.
 #include <algorithm>
 #include <cstdio>
+#include <deque>
 #include <iostream>
 #include <string>
+
+#include <CLI/CLI.hpp>
 
 #include "command.h"
 #include "common/args.h"
@@ -55,9 +58,10 @@ static int run_cli(int argc, char** argv) {
   std::sort(commands.begin(), commands.end(),
             [](const Command& a, const Command& b) { return a.name < b.name; });
   std::function<int()> action;
+  std::deque<Options> bound;  // outlives the parse: the actions query their options' counts
   for (Command& command : commands) {
     CLI::App* sub = app.add_subcommand(command.name, command.summary);
-    auto run = command.setup(*sub);
+    auto run = command.setup(bound.emplace_back(*sub));
     sub->callback([&action, run] { action = run; });
   }
 

@@ -201,7 +201,7 @@ int run_map(const MapState& s) {
                    "; maps: " + ellipse_map_list() + ")");
 }
 
-std::function<int()> setup_map(CLI::App& sub) {
+std::function<int()> setup_map(Options& sub) {
   auto state = std::make_shared<MapState>();
   std::string names;
   for (const auto& n : disk::strategy_names()) {

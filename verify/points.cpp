@@ -233,7 +233,7 @@ int report_points(const ReportOptions& options) {
   return 0;
 }
 
-std::function<int()> setup_points(CLI::App& sub) {
+std::function<int()> setup_points(Options& sub) {
   auto state = std::make_shared<PointsState>();
   std::string strategies, sequences;
   for (const auto& n : disk::strategy_names())

@@ -105,7 +105,7 @@ int run_report(const ReportState& state) {
 const Registrar kReport{
     Command{"report",
             "Run every study and accuracy table into one folder",
-            [](CLI::App& sub) {
+            [](Options& sub) {
               auto state = std::make_shared<ReportState>();
               sub.add_option("--out", state->out, "Output folder (created if missing)")
                   ->capture_default_str();

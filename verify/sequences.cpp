@@ -316,7 +316,7 @@ int report_sequences(const ReportOptions& options) {
   return 0;
 }
 
-std::function<int()> setup_sequences(CLI::App& sub) {
+std::function<int()> setup_sequences(Options& sub) {
   auto state = std::make_shared<SequencesState>();
   std::string names;
   for (const auto& n : sequence::sequence_names())

@@ -134,7 +134,7 @@ int run_soak(const SoakState& st) {
   return 0;
 }
 
-std::function<int()> setup_soak(CLI::App& sub) {
+std::function<int()> setup_soak(Options& sub) {
   auto state = std::make_shared<SoakState>();
   sub.add_option("--samples", state->samples_text, "Samples to draw in all (default 1000000)");
   sub.add_option("--seed", state->seed_text, "Seed (unsigned 64-bit; default 1)");

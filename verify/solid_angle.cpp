@@ -143,7 +143,7 @@ int run_solid_angle(const SolidAngleState& s) {
   return 0;
 }
 
-std::function<int()> setup_solid_angle(CLI::App& sub) {
+std::function<int()> setup_solid_angle(Options& sub) {
   auto state = std::make_shared<SolidAngleState>();
   sub.add_option("--center", state->center, "Disk centre X,Y,Z");
   sub.add_option("--normal", state->normal, "Disk normal X,Y,Z (any length; lit side +normal)");

@@ -660,7 +660,7 @@ int report_variance(const ReportOptions& options) {
   return 0;
 }
 
-std::function<int()> setup_variance(CLI::App& sub) {
+std::function<int()> setup_variance(Options& sub) {
   auto state = std::make_shared<VarianceState>();
   std::string sequences;
   for (const auto& n : sequence::sequence_names())

@@ -13,7 +13,7 @@ std::string ellipse_map_list() {
   return s;
 }
 
-void add_ellipse_options(CLI::App& sub, EllipseOptions& o) {
+void add_ellipse_options(Options& sub, EllipseOptions& o) {
   sub.add_option("--map", o.map, "Spherical-ellipse map: " + ellipse_map_list());
   sub.add_option("--center", o.center, "Disk centre X,Y,Z (with --map)");
   sub.add_option("--normal", o.normal,

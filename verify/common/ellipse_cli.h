@@ -4,7 +4,7 @@
 // sample.
 #include <string>
 
-#include <CLI/CLI.hpp>
+#include "common/options.h"
 
 #include "disklab/ellipse/any_map.h"
 
@@ -27,7 +27,7 @@ struct EllipseOptions {
 std::string ellipse_map_list();
 
 // Adds --map, --center, --normal, --radius, --point, --two-sided, --receiver-normal bound to `o`.
-void add_ellipse_options(CLI::App& sub, EllipseOptions& o);
+void add_ellipse_options(Options& sub, EllipseOptions& o);
 
 // Checks that --map and --strategy are not both given, and that scene options come with --map.
 void check_ellipse_exclusive(const EllipseOptions& o, const std::string& strategy);
