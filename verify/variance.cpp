@@ -152,6 +152,9 @@ std::string fmt(const char* f, double v) {
   return buf;
 }
 
+// The cost table's row of the baseline every ratio divides by.
+constexpr const char* kBaselineName = "baseline";
+
 struct ImageRow {
   std::string region, map, sequence;
   double mse = 0.0, rel_mse = 0.0, mse_se = 0.0, ns_per_sample = 0.0, ratio = 0.0, efficiency = 0.0,
@@ -178,7 +181,7 @@ std::vector<ImageRow> image_rows(const VarianceResult& r) {
                          })
                          .value_or(0.0);
         row.ns_per_sample = r.cost[m].ns_per_sample;
-        row.ratio = r.cost[m].ratio_to_area;
+        row.ratio = r.cost[m].ratio_to_baseline;
         // 1 / (MSE x time per pixel), time in seconds: who wins at equal time.
         row.efficiency = 1.0 / (row.mse * row.ns_per_sample * r.config.spp * 1e-9);
         rows.push_back(row);
@@ -252,7 +255,7 @@ std::string headline(const VarianceResult& r, const std::vector<ImageRow>& rows)
   std::string md = "| map |";
   for (const std::string& q : r.config.sequences)
     md += " MSE " + q + " |";
-  md += " time / sample (ns) | time vs area | efficiency vs area (" + r.config.sequences.back() +
+  md += " time / sample (ns) | time vs baseline | efficiency vs area (" + r.config.sequences.back() +
         ") |\n| --- |";
   for (std::size_t i = 0; i < r.config.sequences.size() + 3; ++i)
     md += " ---: |";
@@ -270,7 +273,7 @@ std::string headline(const VarianceResult& r, const std::vector<ImageRow>& rows)
     md += ' ';
     md += fmt("%.0f", r.cost[m].ns_per_sample);
     md += " | ";
-    md += fmt("%.2f", r.cost[m].ratio_to_area);
+    md += fmt("%.2f", r.cost[m].ratio_to_baseline);
     md += " | ";
     md += last ? fmt("%.3g", last->efficiency_vs_area) : "-";
     md += " |\n";
@@ -451,7 +454,7 @@ Outputs make_outputs(const VarianceResult& r) {
   j["references"] = refs.json;
 
   o.images_csv =
-      "region,map,sequence,spp,mse,mse_se,rel_mse,ns_per_sample,ratio_to_area,efficiency,"
+      "region,map,sequence,spp,mse,mse_se,rel_mse,ns_per_sample,ratio_to_baseline,efficiency,"
       "efficiency_vs_area\n";
   j["images"] = nlohmann::json::array();
   for (const ImageRow& row : rows) {
@@ -467,20 +470,20 @@ Outputs make_outputs(const VarianceResult& r) {
                            {"mse_se", row.mse_se},
                            {"rel_mse", row.rel_mse},
                            {"ns_per_sample", row.ns_per_sample},
-                           {"ratio_to_area", row.ratio},
+                           {"ratio_to_baseline", row.ratio},
                            {"efficiency", row.efficiency},
                            {"efficiency_vs_area", row.efficiency_vs_area}});
   }
   o.cost_csv =
-      "map,setup_ns,sample_ns,ns_per_sample,ratio_to_area,newton_mean,newton_per_sample,newton_max,"
-      "root_solves\n";
+      "map,setup_ns,sample_ns,ns_per_sample,ratio_to_baseline,newton_mean,newton_per_sample,"
+      "newton_max,root_solves\n";
   o.newton_csv = "map,iterations,solves\n";
   j["cost"] = nlohmann::json::array();
   for (std::size_t m = 0; m < r.map_names.size(); ++m) {
     const study::MapCost& k = r.cost[m];
     const study::NewtonStats& n = r.newton[m];
     o.cost_csv += r.map_names[m] + "," + fmt17(k.setup_ns) + "," + fmt17(k.sample_ns) + "," +
-                  fmt17(k.ns_per_sample) + "," + fmt17(k.ratio_to_area) + "," + fmt17(n.mean) +
+                  fmt17(k.ns_per_sample) + "," + fmt17(k.ratio_to_baseline) + "," + fmt17(n.mean) +
                   "," + fmt17(n.per_sample) + "," + std::to_string(n.max) + "," +
                   std::to_string(n.solves) + "\n";
     for (std::size_t b = 0; b < n.histogram.size(); ++b)
@@ -491,14 +494,28 @@ Outputs make_outputs(const VarianceResult& r) {
                          {"setup_ns", k.setup_ns},
                          {"sample_ns", k.sample_ns},
                          {"ns_per_sample", k.ns_per_sample},
-                         {"ratio_to_area", k.ratio_to_area},
+                         {"ratio_to_baseline", k.ratio_to_baseline},
                          {"newton_mean", n.mean},
-                         {"newton_per_sample", n.per_sample},
                          {"newton_per_sample", n.per_sample},
                          {"newton_max", n.max},
                          {"root_solves", n.solves},
                          {"newton_histogram", n.histogram}});
   }
+  // The baseline the ratios divide by: the renderer's area sample (no root solves).
+  const study::MapCost& base = r.baseline_cost;
+  o.cost_csv += std::string(kBaselineName) + "," + fmt17(base.setup_ns) + "," +
+                fmt17(base.sample_ns) + "," + fmt17(base.ns_per_sample) + "," +
+                fmt17(base.ratio_to_baseline) + ",0,0,0,0\n";
+  j["cost"].push_back({{"map", kBaselineName},
+                       {"setup_ns", base.setup_ns},
+                       {"sample_ns", base.sample_ns},
+                       {"ns_per_sample", base.ns_per_sample},
+                       {"ratio_to_baseline", base.ratio_to_baseline},
+                       {"newton_mean", 0.0},
+                       {"newton_per_sample", 0.0},
+                       {"newton_max", 0},
+                       {"root_solves", 0},
+                       {"newton_histogram", nlohmann::json::array()}});
   j["claims"] = claims_json(claims, outcomes);
   o.json = j.dump(1) + "\n";
 
@@ -538,7 +555,10 @@ Outputs make_outputs(const VarianceResult& r) {
       "radial4's four copies of a square point are four samples.\n";
   md += "- Cost: single-threaded over the image's pixels (set-up + " + std::to_string(c.spp) +
         " samples per pixel), median of " + std::to_string(c.timing_repetitions) +
-        " interleaved repetitions in this run; efficiency = 1 / (MSE x time per pixel).\n\n";
+        " interleaved repetitions in this run, every sample consumed whole (direction, point, "
+        "pdf, validity) as in bench_maps; ratios are to the same run's baseline, the area sample "
+        "a renderer writes (ellipse::LeanAreaSampler); efficiency = 1 / (MSE x time per "
+        "pixel).\n\n";
   md += "## Headline: image MSE at " + std::to_string(c.spp) + " spp and cost\n\n" +
         headline(r, rows);
   md += "\n### The shadowed pixels (" + std::to_string(r.image_reference.quadrature_pixels) +
@@ -551,14 +571,20 @@ Outputs make_outputs(const VarianceResult& r) {
       "\n## Cost and Newton-Raphson iterations\n\n| map | set-up (ns) | per sample (ns) | "
       "per sample at " +
       std::to_string(c.spp) +
-      " spp (ns) | vs area | Newton per solve | per sample | max |\n| --- | ---: | ---: | "
+      " spp (ns) | vs baseline | Newton per solve | per sample | max |\n| --- | ---: | ---: | "
       "---: | ---: | ---: | ---: | ---: |\n";
   for (std::size_t m = 0; m < r.map_names.size(); ++m) {
     const study::MapCost& k = r.cost[m];
     md += "| " + r.map_names[m] + " | " + fmt("%.0f", k.setup_ns) + " | " +
           fmt("%.1f", k.sample_ns) + " | " + fmt("%.1f", k.ns_per_sample) + " | " +
-          fmt("%.2f", k.ratio_to_area) + " | " + fmt("%.2f", r.newton[m].mean) + " | " +
+          fmt("%.2f", k.ratio_to_baseline) + " | " + fmt("%.2f", r.newton[m].mean) + " | " +
           fmt("%.2f", r.newton[m].per_sample) + " | " + std::to_string(r.newton[m].max) + " |\n";
+  }
+  {
+    const study::MapCost& k = r.baseline_cost;
+    md += std::string("| ") + kBaselineName + " (the renderer's area sample) | " +
+          fmt("%.0f", k.setup_ns) + " | " + fmt("%.1f", k.sample_ns) + " | " +
+          fmt("%.1f", k.ns_per_sample) + " | 1 | - | - | - |\n";
   }
   md += "\n## Slopes (log RMS vs log N) and RMS at N = 256\n" + slope_tables(r, fits);
   md += "\n## Claims\n\n" + o.claims_markdown;
@@ -704,7 +730,9 @@ std::function<int()> setup_variance(Options& sub) {
       "(a rejected candidate counts as a zero sample); radial4's four copies count as four.\n"
       "References: a rim (boundary) integral where nothing can block the light, a quadrature\n"
       "elsewhere (error estimates <= 1e-10 relative). The error numbers are the same for any\n"
-      "--threads; the timings are measured on one thread, in this run, as ratios to area.\n"
+      "--threads; the timings are measured on one thread, in this run, as ratios to the\n"
+      "baseline (the area sample a renderer writes, ellipse::LeanAreaSampler), by the rules of\n"
+      "bench_maps: every sample consumed whole, methods alternated, median of the repetitions.\n"
       "Files in --out:\n"
       "  variance.csv            region,map,sequence,n,rmse,rel_rmse: RMS over the region's 16\n"
       "                          points and the seeds of (estimate - reference), and of the same\n"
@@ -712,16 +740,17 @@ std::function<int()> setup_variance(Options& sub) {
       "  variance_fits.csv       region,map,sequence,slope,slope_se,fit_n_min,fit_n_max: slope of\n"
       "                          log rmse vs log N, bootstrap standard error over the seeds\n"
       "  variance_images.csv     region,map,sequence,spp,mse,mse_se,rel_mse,ns_per_sample,\n"
-      "                          ratio_to_area,efficiency,efficiency_vs_area: MSE over the\n"
+      "                          ratio_to_baseline,efficiency,efficiency_vs_area: MSE over the\n"
       "                          region's pixels (image: all; shadowed: those an occluder may\n"
       "                          shadow) and image randomizations (mse_se: bootstrap), relative\n"
       "                          MSE (each error / reference), time per sample with the\n"
-      "                          per-pixel set-up amortized, its ratio to area's, and\n"
+      "                          per-pixel set-up amortized, its ratio to the baseline's, and\n"
       "                          efficiency = 1 / (MSE x seconds per pixel)\n"
-      "  variance_cost.csv       map,setup_ns,sample_ns,ns_per_sample,ratio_to_area,newton_mean,\n"
-      "                          newton_per_sample,newton_max,root_solves: set-up alone, each\n"
-      "                          further sample, Newton iterations per root solve (and per\n"
-      "                          sample: radial4 shares a solve among 4) over the image samples\n"
+      "  variance_cost.csv       map,setup_ns,sample_ns,ns_per_sample,ratio_to_baseline,\n"
+      "                          newton_mean,newton_per_sample,newton_max,root_solves: set-up\n"
+      "                          alone, each further sample, Newton iterations per root solve\n"
+      "                          (and per sample: radial4 shares a solve among 4) over the image\n"
+      "                          samples; a last row, baseline, is the renderer's area sample\n"
       "  variance_newton.csv     map,iterations,solves: the iteration histogram\n"
       "  variance_references.csv region,x,y,E,error_estimate,method per region point\n"
       "  variance_reference.f64  the reference image: size x size float64, little-endian,\n"

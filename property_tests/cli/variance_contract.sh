@@ -61,15 +61,22 @@ for m in maps:
             bad.append("no image row %s/%s" % (m, q))
 for i in j["images"]:
     need = {"region", "map", "sequence", "spp", "mse", "rel_mse", "ns_per_sample",
-            "ratio_to_area", "efficiency"}
+            "ratio_to_baseline", "efficiency"}
     if not need <= set(i) or i["spp"] != 16:
         bad.append("bad image row %r" % i)
         break
     if not (i["mse"] > 0 and i["ns_per_sample"] > 0 and i["efficiency"] > 0):
         bad.append("non-positive image numbers %r" % i)
         break
-    if i["map"] == "area" and i["ratio_to_area"] != 1:
-        bad.append("area's ratio to itself is %r" % i["ratio_to_area"])
+    if not 0 < i["ratio_to_baseline"] < float("inf"):
+        bad.append("image row without a positive cost ratio %r" % i)
+        break
+# One cost row per map and a last one for the baseline, whose ratio to itself is 1.
+cost_maps = [c["map"] for c in j["cost"]]
+if cost_maps != list(maps) + ["baseline"]:
+    bad.append("cost rows %r, expected the maps then baseline" % cost_maps)
+elif j["cost"][-1]["ratio_to_baseline"] != 1:
+    bad.append("the baseline's ratio to itself is %r" % j["cost"][-1]["ratio_to_baseline"])
 refs = j["references"]
 if len(refs) != 48:
     bad.append("expected 48 references, got %d" % len(refs))
@@ -114,7 +121,7 @@ expect_usage_error variance --quick --no-plots --out "$TMP/file"
 expect_usage_error variance --quick --no-plots --out ""
 
 run variance --help
-for word in variance.csv variance.json variance_images.csv ns_per_sample ratio_to_area efficiency \
+for word in variance.csv variance.json variance_images.csv ns_per_sample ratio_to_baseline efficiency \
   rel_mse slope_se error_estimate newton_mean --quick Examples; do
   [[ $OUT == *"$word"* ]] || fail "--help does not mention $word"
 done

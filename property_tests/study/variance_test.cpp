@@ -7,6 +7,7 @@
 #include <boost/math/quadrature/gauss.hpp>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -335,10 +336,16 @@ TEST(Variance, NumbersDoNotDependOnTheThreadCount) {
   // radial4 (index 2) shares each solve among its four copies.
   EXPECT_DOUBLE_EQ(one.newton[2].per_sample, one.newton[2].mean / 4.0);
   EXPECT_DOUBLE_EQ(one.newton[1].per_sample, one.newton[1].mean);
-  // Area's cost ratio to itself is 1 by construction; every cost is positive.
-  EXPECT_EQ(one.cost[0].ratio_to_area, 1.0);
-  for (const MapCost& c : one.cost)
+  // The baseline's ratio to itself is 1 by construction; every cost and ratio is positive and
+  // finite, one per map.
+  EXPECT_EQ(one.baseline_cost.ratio_to_baseline, 1.0);
+  EXPECT_GT(one.baseline_cost.ns_per_sample, 0.0);
+  ASSERT_EQ(one.cost.size(), one.map_names.size());
+  for (const MapCost& c : one.cost) {
     EXPECT_GT(c.ns_per_sample, 0.0);
+    EXPECT_GT(c.ratio_to_baseline, 0.0);
+    EXPECT_LT(c.ratio_to_baseline, std::numeric_limits<double>::infinity());
+  }
 }
 
 TEST(Variance, BadConfigurationsAreRejected) {

@@ -10,7 +10,10 @@
 #include <exception>
 #include <mutex>
 #include <stdexcept>
+#include <type_traits>
+#include <variant>
 
+#include "disklab/ellipse/area_lean.h"
 #include "disklab/sequence/random.h"
 #include "disklab/sequence/scramble.h"
 #include "disklab/sequence/sequence.h"
@@ -267,8 +270,38 @@ double median(std::vector<double> v) {
   return m % 2 ? v[m / 2] : 0.5 * (v[m / 2 - 1] + v[m / 2]);
 }
 
-// Set-up and sampling cost over every pixel of the image on the calling thread, the maps
-// interleaved within each repetition (rotated), so drifts of the clock rate hit all alike.
+// Everything a renderer reads from a light sample, the maps and the baseline alike (the rule
+// bench_maps follows): the direction, the point on the light, the pdf and the validity.
+template <class S>
+inline double consume(const S& s) {
+  return s.direction.x() + s.direction.y() + s.direction.z() + s.point.x() + s.point.y() +
+         s.point.z() + s.pdf + (s.valid ? 1.0 : 0.0);
+}
+
+// n samples of one concrete map from u[0..): the same draws as AnyMap::sample_copies (radial4:
+// four copies per u, gamito and tabulated one candidate), without its per-sample dispatch.
+template <class M>
+double draw_samples(const M& m, const Point2* u, uint32_t n) {
+  double sink = 0.0;
+  if constexpr (std::is_same_v<M, ellipse::Radial4Map>) {
+    for (uint32_t j = 0; j < n; j += 4)
+      for (const ellipse::EllipseSample& x : m.sample4(u[j / 4]))
+        sink += consume(x);
+  } else if constexpr (std::is_same_v<M, ellipse::GamitoSampler>) {
+    for (uint32_t j = 0; j < n; ++j)
+      sink += consume(m.propose(u[j]));
+  } else {
+    for (uint32_t j = 0; j < n; ++j)
+      sink += consume(m.sample(u[j]));
+  }
+  return sink;
+}
+
+// Set-up and sampling cost over every pixel of the image on the calling thread, by the rules of
+// bench_maps: every sample consumed whole, the methods alternated (rotated within each
+// repetition, so drifts of the clock rate hit all alike), the baseline the area sample a
+// renderer writes (ellipse::LeanAreaSampler, its light prepared once as a renderer stores it),
+// ratios taken within a repetition and their median reported.
 void run_timing(const VarianceConfig& c, VarianceResult& r, const std::function<void()>& tick) {
   using Clock = std::chrono::steady_clock;
   const int size = c.image.size;
@@ -277,29 +310,38 @@ void run_timing(const VarianceConfig& c, VarianceResult& r, const std::function<
   for (int row = 0; row < size; ++row)
     for (int col = 0; col < size; ++col)
       points[static_cast<std::size_t>(row) * size + col] = c.image.pixel(row, col);
+  // radial4's copies: spp / 4 points per pixel serve its spp samples.
   std::vector<Point2> u(pixels * c.spp);
   sequence::Pcg32 rng(sequence::derive_seed(c.first_seed, 0x7157));
   for (Point2& p : u)
     p = {rng.next_double(), rng.next_double()};
-  const auto area_it = std::find(c.maps.begin(), c.maps.end(), ellipse::MapKind::area);
-  std::vector<std::vector<double>> setup(nm), total(nm), ratio(nm);
+  const DiskLight& l = c.scene.light;
+  const ellipse::LeanDiskLight lean =
+      ellipse::LeanDiskLight::make(ellipse::Disk{l.center, l.normal, l.radius, l.two_sided});
+  const std::size_t baseline = nm;  // the methods: the maps, then the baseline
+  std::vector<std::vector<double>> setup(nm + 1), total(nm + 1), ratio(nm + 1);
   double sink = 0.0;
-  std::array<ellipse::EllipseSample, 4> out;
   for (int rep = 0; rep < c.timing_repetitions; ++rep) {
-    std::vector<double> rep_total(nm);
-    for (std::size_t i = 0; i < nm; ++i) {
-      const std::size_t m = (i + static_cast<std::size_t>(rep)) % nm;
-      const ellipse::MapKind kind = c.maps[m];
+    std::vector<double> rep_total(nm + 1);
+    for (std::size_t i = 0; i <= nm; ++i) {
+      const std::size_t m = (i + static_cast<std::size_t>(rep)) % (nm + 1);
       const auto t0 = Clock::now();
-      for (const ShadingPoint& sp : points)
-        sink += light_map(kind, c.scene, sp).omega();
+      if (m == baseline) {
+        for (const ShadingPoint& sp : points)
+          sink += ellipse::LeanAreaSampler::make(lean, sp.position).valid() ? 1.0 : 0.0;
+      } else {
+        for (const ShadingPoint& sp : points)
+          sink += light_map(c.maps[m], c.scene, sp).omega();
+      }
       const auto t1 = Clock::now();
       for (std::size_t p = 0; p < pixels; ++p) {
-        const ellipse::AnyMap map = light_map(kind, c.scene, points[p]);
         const Point2* up = &u[p * c.spp];
-        for (uint32_t j = 0; j < c.spp;) {
-          j += static_cast<uint32_t>(map.sample_copies(up[j], out));
-          sink += out[0].pdf;
+        if (m == baseline) {
+          sink += draw_samples(ellipse::LeanAreaSampler::make(lean, points[p].position), up, c.spp);
+        } else {
+          const ellipse::AnyMap map = light_map(c.maps[m], c.scene, points[p]);
+          sink +=
+              std::visit([&](const auto& x) { return draw_samples(x, up, c.spp); }, map.variant());
         }
       }
       const auto t2 = Clock::now();
@@ -309,21 +351,24 @@ void run_timing(const VarianceConfig& c, VarianceResult& r, const std::function<
       total[m].push_back(ns_total / static_cast<double>(pixels));
       rep_total[m] = ns_total;
     }
-    if (area_it != c.maps.end())
-      for (std::size_t m = 0; m < nm; ++m)
-        ratio[m].push_back(rep_total[m] / rep_total[area_it - c.maps.begin()]);
+    for (std::size_t m = 0; m <= nm; ++m)
+      ratio[m].push_back(rep_total[m] / rep_total[baseline]);
     if (tick) tick();
   }
   if (sink == 12345.678) std::fputs("", stderr);  // keeps the timed work observable
-  r.cost.assign(nm, {});
-  for (std::size_t m = 0; m < nm; ++m) {
-    MapCost& cost = r.cost[m];
+  auto cost_of = [&](std::size_t m) {
+    MapCost cost;
     cost.setup_ns = median(setup[m]);
     const double per_point = median(total[m]);
     cost.ns_per_sample = per_point / c.spp;
     cost.sample_ns = std::max(0.0, (per_point - cost.setup_ns) / c.spp);
-    cost.ratio_to_area = ratio[m].empty() ? 0.0 : median(ratio[m]);
-  }
+    cost.ratio_to_baseline = median(ratio[m]);
+    return cost;
+  };
+  r.cost.clear();
+  for (std::size_t m = 0; m < nm; ++m)
+    r.cost.push_back(cost_of(m));
+  r.baseline_cost = cost_of(baseline);
 }
 
 }  // namespace

@@ -69,13 +69,14 @@ struct VarianceConfig {
 // Fills defaults and checks the configuration (std::invalid_argument naming the field).
 void finalize(VarianceConfig& config);
 
-// Cost of a map per shading point, single-threaded over the image's pixels: medians over the
-// repetitions; ratio_to_area is the median of the same-repetition ratios.
+// Cost of a map per shading point, single-threaded over the image's pixels, by bench_maps'
+// rules (docs/benchmarks.md): medians over the repetitions; ratio_to_baseline is the median of
+// the same-repetition ratios to the area sample a renderer writes (ellipse::LeanAreaSampler).
 struct MapCost {
   double setup_ns = 0.0;       // make() alone
   double sample_ns = 0.0;      // each further sample
   double ns_per_sample = 0.0;  // (set-up + spp samples) / spp
-  double ratio_to_area = 0.0;  // ns_per_sample / area's
+  double ratio_to_baseline = 0.0;  // (set-up + spp samples) / the baseline's
 };
 
 struct NewtonStats {
@@ -98,6 +99,7 @@ struct VarianceResult {
   // The first image randomization's estimate per pixel: [map][sequence] row-major.
   std::vector<std::vector<double>> images;
   std::vector<MapCost> cost;        // per map
+  MapCost baseline_cost;            // ellipse::LeanAreaSampler, timed with the maps
   std::vector<NewtonStats> newton;  // per map, over every image sample
   const std::vector<double>& image_of(std::size_t map, std::size_t sequence) const {
     return images[map * config.sequences.size() + sequence];
