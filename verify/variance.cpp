@@ -255,8 +255,8 @@ std::string headline(const VarianceResult& r, const std::vector<ImageRow>& rows)
   std::string md = "| map |";
   for (const std::string& q : r.config.sequences)
     md += " MSE " + q + " |";
-  md += " time / sample (ns) | time vs baseline | efficiency vs area (" + r.config.sequences.back() +
-        ") |\n| --- |";
+  md += " time / sample (ns) | time vs baseline | efficiency vs area (" +
+        r.config.sequences.back() + ") |\n| --- |";
   for (std::size_t i = 0; i < r.config.sequences.size() + 3; ++i)
     md += " ---: |";
   md += "\n";

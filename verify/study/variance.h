@@ -73,9 +73,9 @@ void finalize(VarianceConfig& config);
 // rules (docs/benchmarks.md): medians over the repetitions; ratio_to_baseline is the median of
 // the same-repetition ratios to the area sample a renderer writes (ellipse::LeanAreaSampler).
 struct MapCost {
-  double setup_ns = 0.0;       // make() alone
-  double sample_ns = 0.0;      // each further sample
-  double ns_per_sample = 0.0;  // (set-up + spp samples) / spp
+  double setup_ns = 0.0;           // make() alone
+  double sample_ns = 0.0;          // each further sample
+  double ns_per_sample = 0.0;      // (set-up + spp samples) / spp
   double ratio_to_baseline = 0.0;  // (set-up + spp samples) / the baseline's
 };
 

@@ -167,8 +167,8 @@ std::vector<Claim> guillen_claims(const VarianceResult& r) {
         std::string("The fully numerical maps are up to 10x slower than area sampling (") + map +
             ")",
         "time per sample at " + n_text + " spp (set-up included) / the renderer's area sample's",
-        {RuleKind::at_most, 10.0}, {"image"}, {}, {map},
-        measures::constant(cost_ratio(map)), false);
+        {RuleKind::at_most, 10.0}, {"image"}, {}, {map}, measures::constant(cost_ratio(map)),
+        false);
   for (const std::string q : {"pmj02", "sobol-owen"})
     for (const std::string base : {"radial", "ld-radial"})
       add("radial4." + base + "." + q, "radial4",
