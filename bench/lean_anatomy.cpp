@@ -1,6 +1,8 @@
-// Where an area sample's time goes: the lean baseline (area_lean.h) beside the variants it was
-// measured against, each in the plain loop a renderer writes (64K Owen-scrambled Sobol' points on
-// bench_maps' "mid" scene, every field of the sample summed). Prints ns per sample; run it under
+// Where a light sample's time goes: the lean baseline (area_lean.h) beside the variants it was
+// measured against, and the maps whose cost floors docs/benchmarks.md shows, each in the plain
+// loop a renderer writes (64K Owen-scrambled Sobol' points on one of bench_maps' scenes, every
+// field of the sample summed). Prints ns per sample and, for the maps that solve for roots, the
+// mean root-function evaluations per sample and the radial series' terms; run it under
 // cachegrind (scripts/lean-anatomy) for instructions and simulated branch mispredictions per
 // sample, which do not depend on the machine's load.
 //
@@ -10,8 +12,15 @@
 //                clamped inputs, angles up to 7 pi / 4) and a finiteness test per step, the form
 //                the baseline had before;
 //   bare         the two-region form with no test at all (what pbrt-v4's Disk::Sample computes);
-//   concentric-4, concentric-2  the disk point alone, in the four- and two-region forms.
-// Usage: lean_anatomy VARIANT [REPS]   (REPS passes over the 64K points, default 200)
+//   concentric-4, concentric-2  the disk point alone, in the four- and two-region forms;
+//   area         ellipse::AreaSampler, the full-accuracy area map;
+//   radial       ellipse::RadialMap::sample; radial-start and radial-solve its stages: the
+//                root solve's start alone (quarter-range sincos + series reversion), the whole
+//                solve (start + Newton), each consumed as a sample's point;
+//   radial-fast, radial4 (per direction: sample4 / 4), projected  those maps' samples;
+//   projected-azimuth  projected's first root solve alone (u.x -> the azimuth s).
+// Usage: lean_anatomy VARIANT [REPS] [SCENE]   (REPS passes over the 64K points, default 200;
+//        SCENE one of bench_maps' near, mid, far, grazing: default mid)
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -19,7 +28,11 @@
 #include <vector>
 
 #include "disklab/disk/concentric.h"
+#include "disklab/ellipse/area.h"
 #include "disklab/ellipse/area_lean.h"
+#include "disklab/ellipse/projected.h"
+#include "disklab/ellipse/radial4.h"
+#include "disklab/ellipse/radial_fast.h"
 #include "disklab/sequence/sobol.h"
 
 namespace {
@@ -66,23 +79,59 @@ LightSample disk_only(Point2 d) {
   out.point = Vec3(d.x, d.y, 0.0);
   return out;
 }
+
+// A map's sample as the loop consumes it (the fields a renderer reads).
+LightSample as_light(const disklab::ellipse::EllipseSample& e) {
+  LightSample out;
+  out.point = e.point;
+  out.direction = e.direction;
+  out.pdf = e.pdf;
+  out.valid = e.valid;
+  return out;
+}
+
+// bench_maps' scenes (its configs()), the disk's radius 1 and the point at the origin.
+bool scene_of(const std::string& name, disklab::ellipse::Disk& d) {
+  const Vec3 tilted = Vec3(0.3, -0.2, -1.0).normalized();
+  if (name == "near")
+    d = {Vec3(0.3, 0.2, 0.5), Vec3(0, 0, -1), 1.0, false};
+  else if (name == "mid")
+    d = {Vec3(1.0, 0.5, 3.0), tilted, 1.0, false};
+  else if (name == "far")
+    d = {Vec3(300.0, 200.0, 1000.0), tilted, 1.0, false};
+  else if (name == "grazing")
+    d = {Vec3(3.0, 0.0, 0.05), Vec3(0, 0, -1), 1.0, false};
+  else
+    return false;
+  return true;
+}
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc < 2) {
     std::fprintf(
-        stderr, "usage: lean_anatomy baseline|four-region|bare|concentric-4|concentric-2 [REPS]\n");
+        stderr,
+        "usage: lean_anatomy VARIANT [REPS] [SCENE]\n  VARIANT: baseline four-region bare "
+        "concentric-4 concentric-2 area radial radial-start radial-solve radial-fast "
+        "radial4 projected projected-azimuth\n  SCENE: near mid far grazing (default mid)\n");
     return 2;
   }
   const std::string variant = argv[1];
   const int reps = argc > 2 ? std::atoi(argv[2]) : 200;
+  std::string extra;  // what the variant adds to the report line
   if (reps < 1) {
     std::fprintf(stderr, "lean_anatomy: REPS must be a positive integer\n");
     return 2;
   }
-  const disklab::ellipse::Disk scene{Vec3(1.0, 0.5, 3.0), Vec3(0.3, -0.2, -1.0).normalized(), 1.0,
-                                     false};
+  const std::string scene_name = argc > 3 ? argv[3] : "mid";
+  disklab::ellipse::Disk scene;
+  if (!scene_of(scene_name, scene)) {
+    std::fprintf(stderr, "lean_anatomy: unknown scene '%s' (near, mid, far, grazing)\n",
+                 scene_name.c_str());
+    return 2;
+  }
   const Vec3 o = Vec3::Zero();
+  namespace ell = disklab::ellipse;
   const LeanDiskLight light = LeanDiskLight::make(scene);
   const LeanAreaSampler sampler = LeanAreaSampler::make(light, o);
   const disklab::sequence::SobolOwen seq(1);
@@ -90,6 +139,7 @@ int main(int argc, char** argv) {
   for (uint32_t i = 0; i < u.size(); ++i)
     u[i] = seq.at(i);
   double sink = 0.0;
+  long long evaluations = 0;  // root-function evaluations of the maps that solve
   const auto loop = [&](auto f) {
     for (int r = 0; r < reps; ++r)
       for (const Point2& p : u) {
@@ -109,12 +159,76 @@ int main(int argc, char** argv) {
     loop([&](Point2 p) { return disk_only(disk::sample_concentric(p)); });
   else if (variant == "concentric-2")
     loop([&](Point2 p) { return disk_only(concentric_two_region(p)); });
-  else {
+  else if (variant == "area") {
+    const auto m = ell::AreaSampler::make(scene, o);
+    loop([&](Point2 p) { return as_light(m.sample(p)); });
+  } else if (variant == "radial" || variant == "radial-start" || variant == "radial-solve") {
+    const auto m = ell::RadialMap::make(scene, o);
+    const ell::RadialQuadrant q = m.quadrant();
+    extra = " series terms " + std::to_string(m.series.n);
+    if (variant == "radial") {
+      loop([&](Point2 p) {
+        int it = 0;
+        const auto e = m.sample(p, &it);
+        evaluations += it;
+        return as_light(e);
+      });
+    } else if (variant == "radial-start") {
+      loop([&](Point2 p) {
+        const auto a =
+            m.series.reverted_start(disklab::math::quarter_sincos(p.x * 1.5707963267948966));
+        return disk_only({a.cs, a.ss});
+      });
+    } else {
+      loop([&](Point2 p) {
+        int it = 0;
+        const auto a = q.solve(p.x, &it);
+        evaluations += it;
+        return disk_only({a.cs, a.ss});
+      });
+    }
+  } else if (variant == "radial-fast") {
+    const auto m = ell::RadialFastMap::make(scene, o);
+    loop([&](Point2 p) {
+      int it = 0;
+      const auto e = m.sample(p, &it);
+      evaluations += it;
+      return as_light(e);
+    });
+  } else if (variant == "radial4") {
+    const auto m = ell::Radial4Map::make(scene, o);
+    // A quarter of the points, four directions each: as many samples as the other variants.
+    for (int r = 0; r < reps; ++r)
+      for (std::size_t i = 0; i < u.size() / 4; ++i) {
+        int it = 0;
+        for (const auto& e : m.sample4(u[i], &it))
+          sink += e.direction.x() + e.direction.y() + e.direction.z() + e.point.x() + e.point.y() +
+                  e.point.z() + e.pdf + (e.valid ? 1.0 : 0.0);
+        evaluations += it;
+      }
+  } else if (variant == "projected-azimuth") {
+    const auto m = ell::ProjectedMap::make(scene, o, Vec3::UnitZ());
+    loop([&](Point2 p) {
+      int it = 0;
+      const auto a = m.solve_s(p.x, &it);
+      evaluations += it;
+      return disk_only({a.cs, a.ss});
+    });
+  } else if (variant == "projected") {
+    const auto m = ell::ProjectedMap::make(scene, o, Vec3::UnitZ());
+    loop([&](Point2 p) {
+      int it = 0;
+      const auto e = m.sample(p, &it);
+      evaluations += it;
+      return as_light(e);
+    });
+  } else {
     std::fprintf(stderr, "lean_anatomy: unknown variant '%s'\n", variant.c_str());
     return 2;
   }
   const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::printf("%s %.2f ns/sample (checksum %.6g)\n", variant.c_str(),
-              s * 1e9 / (double(reps) * double(u.size())), sink);
+  const double samples = double(reps) * double(u.size());
+  std::printf("%s %.2f ns/sample (checksum %.6g) evaluations/sample %.3f%s\n", variant.c_str(),
+              s * 1e9 / samples, sink, double(evaluations) / samples, extra.c_str());
   return 0;
 }
