@@ -80,6 +80,13 @@ LightSample disk_only(Point2 d) {
   return out;
 }
 
+// Every field a renderer reads from a sample, summed (bench_maps' rule).
+template <class S>
+double consume(const S& s) {
+  return s.direction.x() + s.direction.y() + s.direction.z() + s.point.x() + s.point.y() +
+         s.point.z() + s.pdf + (s.valid ? 1.0 : 0.0);
+}
+
 // A map's sample as the loop consumes it (the fields a renderer reads).
 LightSample as_light(const disklab::ellipse::EllipseSample& e) {
   LightSample out;
@@ -143,10 +150,17 @@ int main(int argc, char** argv) {
   const auto loop = [&](auto f) {
     for (int r = 0; r < reps; ++r)
       for (const Point2& p : u) {
-        const LightSample s = f(p);
-        sink += s.direction.x() + s.direction.y() + s.direction.z() + s.point.x() + s.point.y() +
-                s.point.z() + s.pdf + (s.valid ? 1.0 : 0.0);
+        sink += consume(f(p));
       }
+  };
+  // The same for f(p, &iterations), counting the root-function evaluations.
+  const auto counted = [&](auto f) {
+    loop([&](Point2 p) {
+      int it = 0;
+      const LightSample s = f(p, &it);
+      evaluations += it;
+      return s;
+    });
   };
   const auto t0 = std::chrono::steady_clock::now();
   if (variant == "baseline")
@@ -167,12 +181,7 @@ int main(int argc, char** argv) {
     const ell::RadialQuadrant q = m.quadrant();
     extra = " series terms " + std::to_string(m.series.n);
     if (variant == "radial") {
-      loop([&](Point2 p) {
-        int it = 0;
-        const auto e = m.sample(p, &it);
-        evaluations += it;
-        return as_light(e);
-      });
+      counted([&](Point2 p, int* it) { return as_light(m.sample(p, it)); });
     } else if (variant == "radial-start") {
       loop([&](Point2 p) {
         const auto a =
@@ -180,21 +189,14 @@ int main(int argc, char** argv) {
         return disk_only({a.cs, a.ss});
       });
     } else {
-      loop([&](Point2 p) {
-        int it = 0;
-        const auto a = q.solve(p.x, &it);
-        evaluations += it;
+      counted([&](Point2 p, int* it) {
+        const auto a = q.solve(p.x, it);
         return disk_only({a.cs, a.ss});
       });
     }
   } else if (variant == "radial-fast") {
     const auto m = ell::RadialFastMap::make(scene, o);
-    loop([&](Point2 p) {
-      int it = 0;
-      const auto e = m.sample(p, &it);
-      evaluations += it;
-      return as_light(e);
-    });
+    counted([&](Point2 p, int* it) { return as_light(m.sample(p, it)); });
   } else if (variant == "radial4") {
     const auto m = ell::Radial4Map::make(scene, o);
     // A quarter of the points, four directions each: as many samples as the other variants.
@@ -202,26 +204,18 @@ int main(int argc, char** argv) {
       for (std::size_t i = 0; i < u.size() / 4; ++i) {
         int it = 0;
         for (const auto& e : m.sample4(u[i], &it))
-          sink += e.direction.x() + e.direction.y() + e.direction.z() + e.point.x() + e.point.y() +
-                  e.point.z() + e.pdf + (e.valid ? 1.0 : 0.0);
+          sink += consume(e);
         evaluations += it;
       }
   } else if (variant == "projected-azimuth") {
     const auto m = ell::ProjectedMap::make(scene, o, Vec3::UnitZ());
-    loop([&](Point2 p) {
-      int it = 0;
-      const auto a = m.solve_s(p.x, &it);
-      evaluations += it;
+    counted([&](Point2 p, int* it) {
+      const auto a = m.solve_s(p.x, it);
       return disk_only({a.cs, a.ss});
     });
   } else if (variant == "projected") {
     const auto m = ell::ProjectedMap::make(scene, o, Vec3::UnitZ());
-    loop([&](Point2 p) {
-      int it = 0;
-      const auto e = m.sample(p, &it);
-      evaluations += it;
-      return as_light(e);
-    });
+    counted([&](Point2 p, int* it) { return as_light(m.sample(p, it)); });
   } else {
     std::fprintf(stderr, "lean_anatomy: unknown variant '%s'\n", variant.c_str());
     return 2;
