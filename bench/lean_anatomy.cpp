@@ -157,7 +157,7 @@ int main(int argc, char** argv) {
   const auto counted = [&](auto f) {
     loop([&](Point2 p) {
       int it = 0;
-      const LightSample s = f(p, &it);
+      LightSample s = f(p, &it);
       evaluations += it;
       return s;
     });
