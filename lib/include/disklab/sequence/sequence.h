@@ -10,6 +10,7 @@
 // Sequence below is what the CLI and the experiments use to pick a generator by name.
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -22,6 +23,11 @@ class Sequence {
  public:
   virtual ~Sequence() = default;
   virtual Point2 at(uint32_t index) const = 0;
+  // out[i] = at(first + i) for every i: one virtual call for a whole block of points.
+  virtual void fill(uint32_t first, std::span<Point2> out) const {
+    for (std::size_t i = 0; i < out.size(); ++i)
+      out[i] = at(first + static_cast<uint32_t>(i));
+  }
   // The CLI name of the generator, e.g. "sobol-owen".
   virtual std::string_view name() const = 0;
 };
@@ -32,6 +38,10 @@ class SequenceAdapter final : public Sequence {
  public:
   SequenceAdapter(std::string name, Gen gen) : name_(std::move(name)), gen_(std::move(gen)) {}
   Point2 at(uint32_t index) const override { return gen_.at(index); }
+  void fill(uint32_t first, std::span<Point2> out) const override {
+    for (std::size_t i = 0; i < out.size(); ++i)
+      out[i] = gen_.at(first + static_cast<uint32_t>(i));
+  }
   std::string_view name() const override { return name_; }
   const Gen& generator() const { return gen_; }
 
