@@ -176,7 +176,7 @@ int run_ellipse_inverse(const MapState& s) {
   if (!s.xy.empty()) throw UsageError("--xy belongs to --strategy; --map --inverse takes --dir");
   if (s.dir.empty()) throw UsageError("--dir: missing (the direction X,Y,Z to invert)");
   const Vec3 d = parse_vec3(s.dir, "--dir");
-  if (!(d.squaredNorm() > 0.0)) throw UsageError("--dir: '" + s.dir + "' has zero length");
+  if (!(d.cwiseAbs().maxCoeff() > 0.0)) throw UsageError("--dir: '" + s.dir + "' has zero length");
   const ellipse::AnyMap m = make_ellipse_map(s.ellipse);
   if (!m.has_inverse())
     throw UsageError("--inverse: map " + std::string(m.name()) +

@@ -119,6 +119,28 @@ TEST(Robustness, Item02_GamitoDirectionIsUnitNearThePlane) {
   expect_contracts(m, describe(kUnitDisk, o));
 }
 
+// Issue 46, finding 6: a rejected gamito candidate carried a NaN point (close to the plane) or an
+// infinite one (r = DBL_MAX); "no sample" must carry no NaN or Inf anywhere.
+TEST(Robustness, GamitoRejectedCandidatesCarryNoNanOrInf) {
+  const double big = std::numeric_limits<double>::max();
+  for (const double r : {1.0, big}) {
+    const Disk d{Vec3::Zero(), Vec3(0, 0, 1), r, false};
+    const Vec3 o = r == 1.0 ? Vec3(1, 0, 1e-12) : Vec3(big, 0, 1e-12 * big);
+    const AnyMap m = make("gamito", d, o);
+    ASSERT_TRUE(m.valid()) << r;
+    int rejected = 0;
+    for (const Point2 u : {Point2{0, 0}, Point2{1, 1}, Point2{0, 1}, Point2{1, 0}, Point2{0.5, 0.5},
+                           Point2{1e-9, 0.999}}) {
+      const ellipse::EllipseSample s = m.sample(u);
+      EXPECT_TRUE(s.direction.allFinite() && s.point.allFinite() && s.local.allFinite() &&
+                  std::isfinite(s.pdf))
+          << r << " " << u.x << " " << u.y;
+      if (!s.valid) ++rejected;
+    }
+    EXPECT_GT(rejected, 0) << r;  // the corners of the proposal square miss the disk
+  }
+}
+
 // 3. Near the plane the rim samples reach the disk: the radial family's h and parallel's slice ends
 // are formed without cancellation (issue 17 reported (-1, 0, 0) and (0, -1, 0), parallel to it).
 TEST(Robustness, Item03_RimDirectionsReachTheDiskNearItsPlane) {

@@ -1,5 +1,8 @@
 """disklab.ellipse_map: the CLI's directions bit for bit, every pdf integrating to what it must
 (in numpy, from directions uniform in a cone around the disk), inverses, bad input."""
+import os
+import subprocess
+
 import numpy as np
 import pytest
 
@@ -197,3 +200,20 @@ def test_solid_angle_on_the_axis_and_against_the_cli(cli):
 def test_bad_input_raises_value_error_naming_the_argument(call, arg):
     with pytest.raises(ValueError, match=f"^{arg}:"):
         call()
+
+
+def test_cli_takes_normals_and_directions_of_any_non_zero_length(cli):
+    # Issue 46, finding 7: the CLI refused --normal 0,0,-1e-200 ("has zero length") because its
+    # squared norm underflows; the library and this package take it.
+    scene = ["--map", "radial", "--center", "0,0,1", "--radius", "1", "--point", "0.3,0,0"]
+    unit = cli("points", *scene, "--normal", "0,0,-1", "--count", 64)
+    tiny = cli("points", *scene, "--normal", "0,0,-1e-200", "--count", 64)
+    np.testing.assert_array_equal(tiny, unit)
+    exe = os.environ["DISKLAB_CLI"]
+    inv = [subprocess.run([exe, "map", *scene, "--normal", "0,0,-1", "--inverse", "--dir", d],
+                          check=True, capture_output=True, text=True).stdout
+           for d in ("0.1,0.2,1", "1e-201,2e-201,1e-200")]
+    a, b = (np.array(t.split(), dtype=float) for t in inv)
+    # The two decimal texts are the same direction up to a rounding of each coordinate (1e-201
+    # is not exactly 0.1 * 1e-200): u moves by as little, far below 1e-14.
+    assert a.shape == (2,) and np.abs(a - b).max() < 1e-14

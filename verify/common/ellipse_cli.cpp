@@ -65,7 +65,8 @@ SceneInput parse_scene(const std::string& center, const std::string& normal,
   } else {
     require_positive(in.disk.radius, "--radius");
   }
-  if (!(in.disk.normal.squaredNorm() > 0.0))
+  // Any finite non-zero length: the squared norm of (0, 0, 1e-200) underflows to 0.
+  if (!(in.disk.normal.cwiseAbs().maxCoeff() > 0.0))
     throw UsageError("--normal: '" + normal + "' has zero length (the disk has no orientation)");
   return in;
 }
@@ -81,7 +82,7 @@ ellipse::AnyMap make_ellipse_map(const EllipseOptions& o) {
     throw UsageError("--receiver-normal: only --map projected uses it");
   if (projected) {
     const Vec3 n = parse_vec3(o.receiver_normal, "--receiver-normal");
-    if (!(n.squaredNorm() > 0.0))
+    if (!(n.cwiseAbs().maxCoeff() > 0.0))
       throw UsageError("--receiver-normal: '" + o.receiver_normal + "' has zero length");
     ellipse::AnyMap m = ellipse::AnyMap::make(o.map, in.disk, p, n);
     if (!m.valid())

@@ -67,8 +67,11 @@ struct GamitoSampler {
     // Local direction from the closed-form c - o and the small offset (accurate far away).
     out.local = unit_vector(g.center_local() + g.to_local(pc));
     out.pdf = proposal_pdf();
-    out.valid = X * X + dy * dy <= 1.0 && out.direction.squaredNorm() > 0.0;
-    return out;
+    out.valid =
+        X * X + dy * dy <= 1.0 && out.direction.squaredNorm() > 0.0 && out.point.allFinite();
+    // A rejected candidate is "no sample": its point off the disk can overflow (a huge disk) or
+    // be NaN (0 * inf near the plane), so nothing of it is returned.
+    return out.valid ? out : EllipseSample{};
   }
 
   // Density of a direction as an accepted candidate of propose(): the proposal density inside the
