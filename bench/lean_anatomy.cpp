@@ -19,8 +19,10 @@
 //                solve (start + Newton), each consumed as a sample's point;
 //   radial-fast, radial4 (per direction: sample4 / 4), projected  those maps' samples;
 //   projected-azimuth  projected's first root solve alone (u.x -> the azimuth s).
-// Usage: lean_anatomy VARIANT [REPS] [SCENE]   (REPS passes over the 64K points, default 200;
-//        SCENE one of bench_maps' near, mid, far, grazing: default mid)
+// Usage: lean_anatomy VARIANT [REPS] [SCENE] [ORDER]   (REPS passes over the 64K points, default
+//        200; SCENE one of bench_maps' near, mid, far, grazing: default mid; ORDER "sobol", the
+//        sequence's own order (default), or "shuffled", the same points in a fixed random order,
+//        where a branch on the point cannot learn the sequence's pattern)
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -145,6 +147,18 @@ int main(int argc, char** argv) {
   std::vector<Point2> u(65536);
   for (uint32_t i = 0; i < u.size(); ++i)
     u[i] = seq.at(i);
+  const std::string order = argc > 4 ? argv[4] : "sobol";
+  if (order != "sobol" && order != "shuffled") {
+    std::fprintf(stderr, "lean_anatomy: ORDER is sobol or shuffled, not '%s'\n", order.c_str());
+    return 2;
+  }
+  if (order == "shuffled") {  // a fixed LCG's Fisher-Yates shuffle
+    std::uint64_t x = 12345;
+    for (std::size_t i = u.size() - 1; i > 0; --i) {
+      x = x * 6364136223846793005ULL + 1442695040888963407ULL;
+      std::swap(u[i], u[(x >> 33) % (i + 1)]);
+    }
+  }
   double sink = 0.0;
   long long evaluations = 0;  // root-function evaluations of the maps that solve
   const auto loop = [&](auto f) {
