@@ -18,7 +18,10 @@
 //                root solve's start alone (quarter-range sincos + series reversion), the whole
 //                solve (start + Newton), each consumed as a sample's point;
 //   radial-fast, radial4 (per direction: sample4 / 4), projected  those maps' samples;
-//   projected-azimuth  projected's first root solve alone (u.x -> the azimuth s).
+//   projected-azimuth  projected's first root solve alone (u.x -> the azimuth s);
+//   radial-setup, radial-setup-1, baseline-setup-1, radial-shape  per point a new shading point
+//                (o moved by up to 1e-3 radii): radial's make alone, its make and one sample,
+//                the baseline's make and one sample, the spherical ellipse's shape alone.
 // Usage: lean_anatomy VARIANT [REPS] [SCENE] [ORDER]   (REPS passes over the 64K points, default
 //        200; SCENE one of bench_maps' near, mid, far, grazing: default mid; ORDER "sobol", the
 //        sequence's own order (default), or "shuffled", the same points in a fixed random order,
@@ -208,6 +211,25 @@ int main(int argc, char** argv) {
         return disk_only({a.cs, a.ss});
       });
     }
+  } else if (variant == "radial-setup" || variant == "radial-setup-1" ||
+             variant == "baseline-setup-1" || variant == "radial-shape") {
+    // A new shading point per point (o moved by up to 1e-3 radii): every make sees a new
+    // point, and the series keeps the scene's length. The choice is made outside the loops.
+    const auto at = [&](Point2 p) -> Vec3 { return o + Vec3(1e-3 * p.x, 1e-3 * p.y, 0.0); };
+    if (variant == "baseline-setup-1")
+      loop([&](Point2 p) { return LeanAreaSampler::make(light, at(p)).sample(p); });
+    else if (variant == "radial-shape")
+      loop([&](Point2 p) {
+        const auto g = ell::MapGeometry::make_shape(scene, at(p));
+        return disk_only({g.a, g.b});
+      });
+    else if (variant == "radial-setup-1")
+      loop([&](Point2 p) { return as_light(ell::RadialMap::make(scene, at(p)).sample(p)); });
+    else
+      loop([&](Point2 p) {
+        const auto m = ell::RadialMap::make(scene, at(p));
+        return disk_only({m.series.a0, m.g.omega});
+      });
   } else if (variant == "radial-fast") {
     const auto m = ell::RadialFastMap::make(scene, o);
     counted([&](Point2 p, int* it) { return as_light(m.sample(p, it)); });
